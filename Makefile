@@ -1,0 +1,52 @@
+# Two commands for a fresh Debian 12 machine (as root): `make demo` and `make test`.
+# Both install the missing Debian packages first (idempotent), then configure and build.
+
+DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
+  libeigen3-dev libsuitesparse-dev libcgal-dev libyaml-cpp-dev libcli11-dev libfmt-dev \
+  nlohmann-json3-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev \
+  python3-meshio python3-numpy
+
+JOBS ?= $(shell nproc)
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+DEMO_OUT ?= results/jointed_rock_mass
+
+.PHONY: all deps build build-asan test demo bench format clean
+
+all: build
+
+deps:
+	@missing=$$(for p in $(DEBIAN_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed$$' || echo $$p; \
+	done); \
+	if [ -n "$$missing" ]; then \
+	  echo "Installing missing Debian packages:" $$missing; \
+	  $(SUDO) apt-get update && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $$missing; \
+	fi
+
+build: deps
+	cmake --preset release
+	cmake --build --preset release -j $(JOBS)
+
+build-asan: deps
+	cmake --preset asan-ubsan
+	cmake --build --preset asan-ubsan -j $(JOBS)
+
+test: build build-asan
+	ctest --preset release
+	ctest --preset asan-ubsan
+
+demo: build
+	./build/release/bimrock run examples/jointed_rock_mass/case1_vertical.yaml --output $(DEMO_OUT)
+	@echo "Results of the demo are in $(DEMO_OUT)/ (summary.json, blocks.csv, interfaces.csv, vtk/ for ParaView)."
+
+bench: deps
+	cmake --preset bench
+	cmake --build --preset bench -j $(JOBS)
+	./build/bench/bench/bimrock_bench
+
+format:
+	find src tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+
+clean:
+	rm -rf build

@@ -1,0 +1,17 @@
+# Every dependency is a Debian package (see the Makefile's DEBIAN_PACKAGES).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(CGAL REQUIRED)
+find_package(yaml-cpp REQUIRED)
+find_package(fmt REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3 REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
+
+# SuiteSparse 5 (Debian 12) ships no CMake package: find CHOLMOD by hand.
+find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
+find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+add_library(SuiteSparse::CHOLMOD UNKNOWN IMPORTED)
+set_target_properties(SuiteSparse::CHOLMOD PROPERTIES
+  IMPORTED_LOCATION "${CHOLMOD_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}")

@@ -1,0 +1,43 @@
+#pragma once
+/// @file What a displacement vector U means, block by block and interface by interface.
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <bimrock/assembly/kinematics.hpp>
+#include <bimrock/model/model.hpp>
+
+namespace bimrock {
+
+struct BlockState {
+  Vec6 d;                   ///< [u0, v0, theta, eps_x, eps_y, gamma_xy]
+  Eigen::Vector3d strain;   ///< [eps_x, eps_y, gamma_xy]
+  Eigen::Vector3d stress;   ///< [sigma_x, sigma_y, tau_xy] = D_b strain [Pa], tension positive
+};
+
+struct InterfacePointState {
+  Vec2 point;
+  Eigen::Vector2d delta;   ///< [delta_n, delta_s] [m]; delta_n > 0 opens
+  Eigen::Vector2d stress;  ///< [sigma_n, tau] [Pa]; sigma_n > 0 is tension
+};
+
+/// Both integration points of the interface's rule.
+using InterfaceState = std::array<InterfacePointState, 2>;
+
+BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u);
+InterfaceState interface_state(const Model& model, const Interface& f, const Eigen::VectorXd& u);
+
+/// Displacement u = Q(p) d of a block at point p (eq. 1).
+Vec2 displacement_at(const Model& model, int block, const Vec2& p, const Eigen::VectorXd& u);
+
+/// Mean strain [eps_x, eps_y, gamma_xy] of the whole mass, from its boundary displacements:
+/// (1/A) closed integral sym(u (x) n) ds over the outline (DESIGN.md section 4), 2-point Gauss
+/// (exact for the linear u along each edge). Equals the area-weighted block strains plus the
+/// joint openings.
+Eigen::Vector3d mean_strain(const Model& model, const Eigen::VectorXd& u);
+
+/// Total area of the blocks [m^2].
+double total_area(const Model& model);
+
+}  // namespace bimrock

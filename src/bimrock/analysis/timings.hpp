@@ -1,0 +1,46 @@
+#pragma once
+/// @file Wall-clock time per named phase of an analysis.
+#include <chrono>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace bimrock {
+
+struct Timings {
+  std::vector<std::pair<std::string, double>> phases;  ///< (phase, seconds), in order
+
+  void add(const std::string& phase, double seconds) {
+    for (auto& [name, s] : phases) {
+      if (name == phase) {
+        s += seconds;
+        return;
+      }
+    }
+    phases.emplace_back(phase, seconds);
+  }
+  [[nodiscard]] double total() const {
+    double t = 0.0;
+    for (const auto& p : phases) t += p.second;
+    return t;
+  }
+};
+
+/// Times a scope: `{ ScopedTimer t(timings, "assemble"); ... }`.
+class ScopedTimer {
+ public:
+  ScopedTimer(Timings& timings, std::string phase)
+      : timings_(timings), phase_(std::move(phase)), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedTimer() {
+    timings_.add(phase_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+  }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  Timings& timings_;
+  std::string phase_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace bimrock

@@ -1,0 +1,26 @@
+#pragma once
+/// @file Scattering local blocks into the global stiffness K and load vector P (eq. 14).
+/// Global unknowns: U = [d_0; d_1; ...], block k owns rows 6k .. 6k+5.
+#include <cstdint>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <bimrock/model/model.hpp>
+
+namespace bimrock {
+
+/// 64-bit indices: a 10^6-block K has more non-zeros than an int counts in its factor.
+using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>;
+
+/// The lower triangle of K (K is symmetric; CHOLMOD reads one triangle).
+SparseMatrix assemble_stiffness_lower(const Model& model);
+
+/// The whole symmetric K, for checks and small problems.
+SparseMatrix full_from_lower(const SparseMatrix& lower);
+
+/// P of eq. 14 for the model's loads: body forces t A gamma g (exact: first moments about the
+/// centroid vanish), point loads Q(p)^T F, tractions t * integral Q^T tr ds (2-point Gauss, exact).
+Eigen::VectorXd assemble_loads(const Model& model, const Loads& loads);
+
+}  // namespace bimrock

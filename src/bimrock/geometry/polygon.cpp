@@ -1,0 +1,105 @@
+#include <bimrock/geometry/polygon.hpp>
+
+#include <cmath>
+
+namespace bimrock {
+
+double signed_area(const Polygon& p) {
+  double twice = 0.0;
+  const std::size_t n = p.size();
+  for (std::size_t k = 0; k < n; ++k) twice += cross(p.vertices[k], p.vertices[(k + 1) % n]);
+  return 0.5 * twice;
+}
+
+Vec2 centroid(const Polygon& p) {
+  // Shoelace centroid, taken relative to the first vertex to limit cancellation far from origin.
+  const Vec2 o = p.vertices.front();
+  const std::size_t n = p.size();
+  double twice_area = 0.0;
+  Vec2 sum = Vec2::Zero();
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2 a = p.vertices[k] - o;
+    const Vec2 b = p.vertices[(k + 1) % n] - o;
+    const double c = cross(a, b);
+    twice_area += c;
+    sum += c * (a + b);
+  }
+  return o + sum / (3.0 * twice_area);
+}
+
+BBox bbox_of(const Polygon& p) { return bbox_of(std::span<const Vec2>(p.vertices)); }
+
+Vec2 outward_normal(const Polygon& p, std::size_t k) {
+  const Segment e = p.edge(k);
+  const Vec2 t = e.direction();
+  return {t.y(), -t.x()};  // right of the edge is outside for counter-clockwise vertices
+}
+
+bool contains(const Polygon& poly, const Vec2& p, double tol) {
+  for (std::size_t k = 0; k < poly.size(); ++k) {
+    if (outward_normal(poly, k).dot(p - poly.vertices[k]) > tol) return false;
+  }
+  return true;
+}
+
+PolygonCheck check_convex_polygon(const Polygon& p, double tol) {
+  const std::size_t n = p.size();
+  if (n < 3) return {PolygonDefect::too_few_vertices, 0};
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!std::isfinite(p.vertices[k].x()) || !std::isfinite(p.vertices[k].y()))
+      return {PolygonDefect::not_finite, k};
+  }
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t m = k + 1; m < n; ++m) {
+      if ((p.vertices[k] - p.vertices[m]).norm() <= tol) return {PolygonDefect::duplicate_vertex, m};
+    }
+  }
+  const double area = signed_area(p);
+  BBox box = bbox_of(p);
+  if (std::abs(area) <= tol * box.diagonal()) return {PolygonDefect::zero_area, 0};
+  if (area < 0.0) return {PolygonDefect::clockwise, 0};
+  // Convex: every vertex lies on or left of the line through its two neighbours' edges.
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2& prev = p.vertices[(k + n - 1) % n];
+    const Vec2& cur = p.vertices[k];
+    const Vec2& next = p.vertices[(k + 1) % n];
+    const Vec2 d = next - prev;
+    // A convex vertex lies right of the chord prev->next (negative distance); reflex when left.
+    const double dist = cross(d, cur - prev) / d.norm();
+    if (dist > tol) return {PolygonDefect::non_convex, k};
+  }
+  // A polygon that winds more than once (a star) passes the local test: count the turning.
+  double turning = 0.0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2 a = p.vertices[(k + 1) % n] - p.vertices[k];
+    const Vec2 b = p.vertices[(k + 2) % n] - p.vertices[(k + 1) % n];
+    turning += std::atan2(cross(a, b), a.dot(b));
+  }
+  if (std::abs(turning - 2.0 * M_PI) > 1e-6) return {PolygonDefect::non_convex, 0};
+  return {};
+}
+
+std::string describe(const PolygonCheck& c) {
+  const std::string v = "vertex " + std::to_string(c.vertex + 1);
+  switch (c.defect) {
+    case PolygonDefect::none:
+      return "valid convex polygon";
+    case PolygonDefect::too_few_vertices:
+      return "a polygon needs at least 3 vertices";
+    case PolygonDefect::not_finite:
+      return v + " is not a finite number (NaN or infinity)";
+    case PolygonDefect::duplicate_vertex:
+      return v + " duplicates an earlier vertex";
+    case PolygonDefect::zero_area:
+      return "the polygon has zero area";
+    case PolygonDefect::clockwise:
+      return "the vertices are clockwise; list them counter-clockwise";
+    case PolygonDefect::non_convex:
+      return v + " makes the polygon non-convex";
+  }
+  return "unknown defect";
+}
+
+double model_tolerance(const BBox& model_box) { return 1e-9 * model_box.diagonal(); }
+
+}  // namespace bimrock

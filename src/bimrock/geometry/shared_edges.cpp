@@ -1,0 +1,141 @@
+#include <bimrock/geometry/shared_edges.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <CGAL/box_intersection_d.h>
+
+namespace bimrock {
+namespace {
+
+using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t,
+                                                       CGAL::Box_intersection_d::ID_EXPLICIT>;
+
+// Overlap of edge a (of polygon i) with edge b (of polygon j): the part of a that b covers, as a
+// parameter interval [t0, t1] along a. Empty when the edges are not anti-parallel and collinear.
+bool collinear_overlap(const Segment& a, const Segment& b, double tol, double& t0, double& t1) {
+  const Vec2 da = a.b - a.a;
+  const double la = da.norm();
+  const Vec2 ua = da / la;
+  const Vec2 db = b.b - b.a;
+  if (ua.dot(db) >= 0.0) return false;  // neighbours traverse a shared edge in opposite senses
+  if (std::abs(cross(ua, b.a - a.a)) > tol || std::abs(cross(ua, b.b - a.a)) > tol) return false;
+  const double sb0 = ua.dot(b.a - a.a);
+  const double sb1 = ua.dot(b.b - a.a);
+  const double s0 = std::max(0.0, std::min(sb0, sb1));
+  const double s1 = std::min(la, std::max(sb0, sb1));
+  if (s1 - s0 <= tol) return false;
+  t0 = s0 / la;
+  t1 = s1 / la;
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, int>> candidate_pairs(std::span<const Polygon> polygons, double tol) {
+  std::vector<Box> boxes;
+  boxes.reserve(polygons.size());
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    const BBox b = bbox_of(polygons[k]);
+    double lo[2] = {b.lo.x() - tol, b.lo.y() - tol};
+    double hi[2] = {b.hi.x() + tol, b.hi.y() + tol};
+    boxes.emplace_back(lo, hi, k);
+  }
+  std::vector<std::pair<int, int>> pairs;
+  auto report = [&](const Box& a, const Box& b) {
+    const int i = static_cast<int>(a.handle());
+    const int j = static_cast<int>(b.handle());
+    pairs.emplace_back(std::min(i, j), std::max(i, j));
+  };
+  // Closed boxes: blocks that only touch still form a candidate pair.
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), report, std::ptrdiff_t(10),
+                                CGAL::Box_intersection_d::CLOSED);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+std::vector<SharedEdge> find_shared_edges(std::span<const Polygon> polygons, double tol) {
+  std::vector<SharedEdge> shared;
+  for (const auto& [i, j] : candidate_pairs(polygons, tol)) {
+    const Polygon& pi = polygons[i];
+    const Polygon& pj = polygons[j];
+    for (std::size_t ei = 0; ei < pi.size(); ++ei) {
+      const Segment a = pi.edge(ei);
+      for (std::size_t ej = 0; ej < pj.size(); ++ej) {
+        double t0 = 0.0;
+        double t1 = 0.0;
+        if (!collinear_overlap(a, pj.edge(ej), tol, t0, t1)) continue;
+        shared.push_back({i, j, static_cast<int>(ei), static_cast<int>(ej), {a.at(t0), a.at(t1)},
+                          outward_normal(pi, ei)});
+      }
+    }
+  }
+  return shared;
+}
+
+std::vector<BoundaryEdge> find_boundary_edges(std::span<const Polygon> polygons,
+                                              std::span<const SharedEdge> shared, double tol) {
+  // Covered parameter intervals per (polygon, edge), from both sides of every shared segment.
+  std::vector<std::vector<std::vector<std::pair<double, double>>>> covered(polygons.size());
+  for (std::size_t k = 0; k < polygons.size(); ++k) covered[k].resize(polygons[k].size());
+  auto cover = [&](int poly, int edge, const Segment& s) {
+    const Segment e = polygons[poly].edge(edge);
+    const Vec2 d = e.b - e.a;
+    const double l2 = d.squaredNorm();
+    double t0 = (s.a - e.a).dot(d) / l2;
+    double t1 = (s.b - e.a).dot(d) / l2;
+    if (t0 > t1) std::swap(t0, t1);
+    covered[poly][edge].emplace_back(t0, t1);
+  };
+  for (const SharedEdge& s : shared) {
+    cover(s.i, s.edge_i, s.segment);
+    cover(s.j, s.edge_j, s.segment);
+  }
+  std::vector<BoundaryEdge> boundary;
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    for (std::size_t e = 0; e < polygons[k].size(); ++e) {
+      const Segment edge = polygons[k].edge(e);
+      const double len = edge.length();
+      auto& intervals = covered[k][e];
+      std::sort(intervals.begin(), intervals.end());
+      double t = 0.0;
+      auto emit = [&](double t_end) {
+        if ((t_end - t) * len > tol) {
+          boundary.push_back({static_cast<int>(k), static_cast<int>(e), {edge.at(t), edge.at(t_end)},
+                              outward_normal(polygons[k], e)});
+        }
+      };
+      for (const auto& [a, b] : intervals) {
+        if (a > t) emit(a);
+        t = std::max(t, b);
+      }
+      emit(1.0);
+    }
+  }
+  return boundary;
+}
+
+std::vector<std::pair<int, int>> find_overlaps(std::span<const Polygon> polygons, double tol) {
+  // Two convex polygons overlap unless an edge normal of one separates them (by at least -tol).
+  auto separated_by_edges_of = [tol](const Polygon& p, const Polygon& q) {
+    for (std::size_t e = 0; e < p.size(); ++e) {
+      const Vec2 n = outward_normal(p, e);
+      const Vec2& o = p.vertices[e];
+      double min_q = std::numeric_limits<double>::infinity();
+      for (const Vec2& v : q.vertices) min_q = std::min(min_q, n.dot(v - o));
+      if (min_q >= -tol) return true;
+    }
+    return false;
+  };
+  std::vector<std::pair<int, int>> overlaps;
+  for (const auto& [i, j] : candidate_pairs(polygons, tol)) {
+    if (!separated_by_edges_of(polygons[i], polygons[j]) &&
+        !separated_by_edges_of(polygons[j], polygons[i]))
+      overlaps.emplace_back(i, j);
+  }
+  return overlaps;
+}
+
+}  // namespace bimrock

@@ -1,0 +1,89 @@
+#pragma once
+/// @file What a case file says, before it is turned into a Model: names not yet resolved,
+/// selectors not yet applied. The io layer fills it; build_model() checks and resolves it.
+/// Units: SI throughout (m, Pa, Pa/m, N, N/m^3).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <bimrock/geometry/polygon.hpp>
+#include <bimrock/model/materials.hpp>
+#include <bimrock/model/selector.hpp>
+
+namespace bimrock {
+
+struct AnalysisSettings {
+  PlaneMode plane = PlaneMode::strain;
+  double thickness = 1.0;  ///< t [m]
+  /// Penalty factor for continuum interfaces and rigid supports without their own material.
+  double penalty_factor = kDefaultPenaltyFactor;
+};
+
+struct BlockSpec {
+  Polygon polygon;
+  std::string material;
+  SourceRef source;
+};
+
+/// Interfaces picked by `where` get joint material `material`; later rules win.
+struct JointRule {
+  Selector where;
+  std::string material;
+  SourceRef source;
+};
+
+enum class SupportKind {
+  fixed,   ///< both directions held
+  roller,  ///< normal direction held, free to slide along the edge
+};
+
+/// Boundary edges picked by `where` are tied to the fixed ground.
+struct SupportSpec {
+  Selector where;
+  SupportKind kind = SupportKind::fixed;
+  std::optional<std::string> joint_material;  ///< springs of the support; default: rigid penalty
+  SourceRef source;
+};
+
+struct PointLoadSpec {
+  Vec2 point = Vec2::Zero();  ///< [m], must lie in a block
+  Vec2 force = Vec2::Zero();  ///< [N] over the thickness t
+  SourceRef source;
+};
+
+/// Traction on the boundary edges picked by `where`.
+struct TractionSpec {
+  Selector where;
+  double normal = 0.0;  ///< [Pa] along the outward normal: positive pulls (tension positive)
+  double shear = 0.0;   ///< [Pa] along the tangent s = (-n_y, n_x) (counter-clockwise round the block)
+  SourceRef source;
+};
+
+struct LoadsSpec {
+  /// Body force per unit volume = unit_weight * gravity (gravity is dimensionless, e.g. (0, -1)).
+  Vec2 gravity = Vec2::Zero();
+  std::vector<PointLoadSpec> points;
+  std::vector<TractionSpec> tractions;
+};
+
+struct MonitorSpec {
+  std::string name;
+  Vec2 point = Vec2::Zero();
+  SourceRef source;
+};
+
+struct CaseSpec {
+  std::string file;  ///< the case file, for error messages
+  std::string title;
+  AnalysisSettings settings;
+  std::vector<BlockMaterial> block_materials;
+  std::vector<JointMaterial> joint_materials;
+  std::vector<BlockSpec> blocks;
+  std::string default_joint;  ///< joint material of interfaces no rule picks
+  std::vector<JointRule> joint_rules;
+  std::vector<SupportSpec> supports;
+  LoadsSpec loads;
+  std::vector<MonitorSpec> monitors;
+};
+
+}  // namespace bimrock

@@ -1,0 +1,92 @@
+#pragma once
+/// @file The block-interfaces model as plain data, checked once when built (build_model).
+/// Units: SI throughout (m, Pa, Pa/m, N, N/m^3).
+#include <string>
+#include <vector>
+
+#include <bimrock/geometry/polygon.hpp>
+#include <bimrock/geometry/shared_edges.hpp>
+#include <bimrock/model/case_spec.hpp>
+
+namespace bimrock {
+
+/// The index a support interface uses for the fixed ground in place of block j.
+inline constexpr int kGround = -1;
+
+struct Block {
+  Polygon polygon;
+  Vec2 centroid;  ///< (x0, y0) of eq. 1
+  double area = 0.0;
+  int material = 0;  ///< index into Model::block_materials
+  SourceRef source;
+};
+
+/// A straight segment of contact between block i and block j (or the ground, j == kGround).
+struct Interface {
+  int block_i = 0;
+  int block_j = kGround;
+  Segment segment;
+  Vec2 normal;  ///< unit, from i into j; delta_n > 0 is opening (DESIGN.md section 2)
+  double normal_stiffness = 0.0;  ///< k_n [Pa/m]
+  double shear_stiffness = 0.0;   ///< k_s [Pa/m]
+  Integration integration = Integration::lobatto;
+  int joint_material = -1;  ///< index into Model::joint_materials; -1 for a rigid (penalty) support
+  int support = -1;         ///< index of the support spec for ground interfaces, else -1
+
+  [[nodiscard]] bool is_support() const { return block_j == kGround; }
+};
+
+struct PointLoad {
+  int block = 0;
+  Vec2 point;
+  Vec2 force;  ///< [N]
+};
+
+struct Traction {
+  int block = 0;
+  Segment segment;
+  Vec2 outward_normal;
+  double normal = 0.0;  ///< [Pa], tension positive
+  double shear = 0.0;   ///< [Pa], along (-n_y, n_x)
+};
+
+struct Loads {
+  Vec2 gravity = Vec2::Zero();  ///< body force per volume = unit_weight * gravity
+  std::vector<PointLoad> points;
+  std::vector<Traction> tractions;
+};
+
+struct Monitor {
+  std::string name;
+  int block = 0;
+  Vec2 point;
+};
+
+struct Model {
+  std::string source_file;
+  std::string title;
+  AnalysisSettings settings;
+  std::vector<BlockMaterial> block_materials;
+  std::vector<JointMaterial> joint_materials;
+  std::vector<Block> blocks;
+  std::vector<Interface> interfaces;  ///< block-block interfaces first, then supports
+  std::vector<BoundaryEdge> boundary;  ///< the outline (supported parts included)
+  Loads loads;
+  std::vector<Monitor> monitors;
+  double tolerance = 0.0;  ///< length tolerance, see model_tolerance()
+
+  [[nodiscard]] int n_blocks() const { return static_cast<int>(blocks.size()); }
+  [[nodiscard]] int n_interfaces() const { return static_cast<int>(interfaces.size()); }
+  [[nodiscard]] int n_dofs() const { return 6 * n_blocks(); }
+};
+
+/// Checks the case and resolves it into a Model: polygons valid, blocks not overlapping,
+/// materials known and physical, interfaces detected and given their springs, supports,
+/// loads and monitors attached to blocks. Throws InputError naming the offending item.
+/// Whether the supports hold every block is checked by the analysis (it needs K).
+Model build_model(const CaseSpec& spec);
+
+/// Index of the block containing p (within tol), or -1. Linear scan: for a few points only.
+int find_block_containing(const Model& model, const Vec2& p);
+
+}  // namespace bimrock

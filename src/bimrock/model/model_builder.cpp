@@ -1,0 +1,256 @@
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <bimrock/model/model.hpp>
+
+namespace bimrock {
+namespace {
+
+std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
+bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
+
+class Builder {
+ public:
+  explicit Builder(const CaseSpec& spec) : spec_(spec) {}
+
+  Model build() {
+    model_.source_file = spec_.file;
+    model_.title = spec_.title;
+    check_settings();
+    add_materials();
+    add_blocks();
+    add_interfaces();
+    add_supports();
+    add_loads();
+    add_monitors();
+    return std::move(model_);
+  }
+
+ private:
+  [[noreturn]] void fail(const SourceRef& ref, const std::string& message) const {
+    throw InputError(spec_.file, ref, message);
+  }
+
+  void check_settings() {
+    const AnalysisSettings& s = spec_.settings;
+    if (!finite_positive(s.thickness))
+      fail({0, "analysis.thickness"}, "thickness must be a positive number");
+    if (!finite_positive(s.penalty_factor))
+      fail({0, "analysis.penalty_factor"}, "penalty factor must be a positive number");
+    model_.settings = s;
+  }
+
+  void add_materials() {
+    for (const BlockMaterial& m : spec_.block_materials) {
+      if (block_material_index_.count(m.name)) fail(m.source, "duplicate material name");
+      if (!finite_positive(m.young)) fail(m.source, "Young's modulus E must be positive");
+      if (!std::isfinite(m.poisson) || m.poisson <= -1.0 || m.poisson >= 0.5)
+        fail(m.source, "Poisson's ratio nu must lie in (-1, 0.5)");
+      if (!finite_non_negative(m.unit_weight)) fail(m.source, "unit weight must be >= 0");
+      block_material_index_[m.name] = static_cast<int>(model_.block_materials.size());
+      model_.block_materials.push_back(m);
+    }
+    for (const JointMaterial& j : spec_.joint_materials) {
+      if (joint_material_index_.count(j.name)) fail(j.source, "duplicate joint material name");
+      if (j.kind == JointMaterial::Kind::springs) {
+        if (!finite_positive(j.normal_stiffness)) fail(j.source, "normal stiffness k_n must be positive");
+        if (!finite_non_negative(j.shear_stiffness)) fail(j.source, "shear stiffness k_s must be >= 0");
+      } else if (!finite_positive(j.penalty_factor)) {
+        fail(j.source, "penalty factor must be positive");
+      }
+      if (j.subdivisions < 1) fail(j.source, "subdivisions must be at least 1");
+      joint_material_index_[j.name] = static_cast<int>(model_.joint_materials.size());
+      model_.joint_materials.push_back(j);
+    }
+  }
+
+  int joint_material(const std::string& name, const SourceRef& ref) const {
+    auto it = joint_material_index_.find(name);
+    if (it == joint_material_index_.end()) fail(ref, "unknown joint material " + quoted(name));
+    return it->second;
+  }
+
+  void add_blocks() {
+    if (spec_.blocks.empty()) fail({0, "blocks"}, "the case has no blocks");
+    BBox box;
+    for (const BlockSpec& b : spec_.blocks) {
+      for (const Vec2& v : b.polygon.vertices) {
+        if (!std::isfinite(v.x()) || !std::isfinite(v.y()))
+          fail(b.source, "a vertex is not a finite number (NaN or infinity)");
+        box.add(v);
+      }
+    }
+    model_.tolerance = model_tolerance(box);
+    for (const BlockSpec& b : spec_.blocks) {
+      auto it = block_material_index_.find(b.material);
+      if (it == block_material_index_.end()) fail(b.source, "unknown material " + quoted(b.material));
+      const PolygonCheck check = check_convex_polygon(b.polygon, model_.tolerance);
+      if (check.defect != PolygonDefect::none) fail(b.source, describe(check));
+      model_.blocks.push_back(
+          {b.polygon, centroid(b.polygon), signed_area(b.polygon), it->second, b.source});
+    }
+    polygons_.reserve(model_.blocks.size());
+    for (const Block& b : model_.blocks) polygons_.push_back(b.polygon);
+    const auto overlaps = find_overlaps(polygons_, model_.tolerance);
+    if (!overlaps.empty()) {
+      const auto [i, j] = overlaps.front();
+      fail(model_.blocks[j].source,
+           "overlaps " + describe_block(i) + " (blocks may touch along edges but not overlap)");
+    }
+  }
+
+  std::string describe_block(int k) const {
+    const SourceRef& s = model_.blocks[k].source;
+    std::string d = s.item.empty() ? "block " + std::to_string(k) : s.item;
+    if (s.line > 0) d += " (line " + std::to_string(s.line) + ")";
+    return d;
+  }
+
+  // Springs of an interface between blocks i and j (j may be kGround) of joint material m,
+  // or a rigid penalty support when m < 0.
+  SpringPair springs(int m, int i, int j) const {
+    if (m >= 0 && model_.joint_materials[m].kind == JointMaterial::Kind::springs)
+      return {model_.joint_materials[m].normal_stiffness, model_.joint_materials[m].shear_stiffness};
+    // Penalty (eq. 15): k = p E / l, E the stiffer block, l = sqrt of the mean block area.
+    const double p = m >= 0 ? model_.joint_materials[m].penalty_factor : model_.settings.penalty_factor;
+    double e = model_.block_materials[model_.blocks[i].material].young;
+    double area = model_.blocks[i].area;
+    if (j != kGround) {
+      e = std::max(e, model_.block_materials[model_.blocks[j].material].young);
+      area = 0.5 * (area + model_.blocks[j].area);
+    }
+    const double k = p * e / std::sqrt(area);
+    return {k, k};
+  }
+
+  void push_interface(Interface f, int subdivisions) {
+    const Segment s = f.segment;
+    for (int k = 0; k < subdivisions; ++k) {
+      f.segment = {s.at(double(k) / subdivisions), s.at(double(k + 1) / subdivisions)};
+      model_.interfaces.push_back(f);
+    }
+  }
+
+  void add_interfaces() {
+    shared_ = find_shared_edges(polygons_, model_.tolerance);
+    std::vector<int> material(shared_.size(), -1);
+    if (!spec_.default_joint.empty()) {
+      const int m = joint_material(spec_.default_joint, {0, "joints.default"});
+      std::fill(material.begin(), material.end(), m);
+    }
+    for (const JointRule& rule : spec_.joint_rules) {
+      const int m = joint_material(rule.material, rule.source);
+      bool any = false;
+      for (std::size_t k = 0; k < shared_.size(); ++k) {
+        if (selects(rule.where, shared_[k].segment, model_.tolerance)) {
+          material[k] = m;
+          any = true;
+        }
+      }
+      if (!any) fail(rule.source, "selects no interface between blocks");
+    }
+    for (std::size_t k = 0; k < shared_.size(); ++k) {
+      const SharedEdge& s = shared_[k];
+      if (material[k] < 0) {
+        const Vec2 mid = s.segment.midpoint();
+        fail({0, "joints"}, "the interface between " + describe_block(s.i) + " and " +
+                                describe_block(s.j) + " at (" + std::to_string(mid.x()) + ", " +
+                                std::to_string(mid.y()) +
+                                ") has no joint material: give a default or a rule that selects it");
+      }
+      const JointMaterial& jm = model_.joint_materials[material[k]];
+      const SpringPair k_ns = springs(material[k], s.i, s.j);
+      push_interface({s.i, s.j, s.segment, s.normal, k_ns.normal, k_ns.shear, jm.integration,
+                      material[k], -1},
+                     jm.subdivisions);
+    }
+  }
+
+  void add_supports() {
+    model_.boundary = find_boundary_edges(polygons_, shared_, model_.tolerance);
+    std::vector<int> supported_by(model_.boundary.size(), -1);
+    for (std::size_t sup = 0; sup < spec_.supports.size(); ++sup) {
+      const SupportSpec& s = spec_.supports[sup];
+      const int m = s.joint_material ? joint_material(*s.joint_material, s.source) : -1;
+      bool any = false;
+      for (std::size_t e = 0; e < model_.boundary.size(); ++e) {
+        const BoundaryEdge& edge = model_.boundary[e];
+        if (!selects(s.where, edge.segment, model_.tolerance)) continue;
+        if (supported_by[e] >= 0)
+          fail(s.source, "selects a boundary edge already held by " +
+                             spec_.supports[supported_by[e]].source.item);
+        supported_by[e] = static_cast<int>(sup);
+        any = true;
+        SpringPair k_ns = springs(m, edge.polygon, kGround);
+        if (s.kind == SupportKind::roller) k_ns.shear = 0.0;
+        const Integration rule = m >= 0 ? model_.joint_materials[m].integration : Integration::lobatto;
+        const int subdivisions = m >= 0 ? model_.joint_materials[m].subdivisions : 1;
+        push_interface({edge.polygon, kGround, edge.segment, edge.outward_normal, k_ns.normal,
+                        k_ns.shear, rule, m, static_cast<int>(sup)},
+                       subdivisions);
+      }
+      if (!any) fail(s.source, "selects no boundary edge");
+    }
+  }
+
+  int block_at(const Vec2& p, const SourceRef& ref, const std::string& what) const {
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) fail(ref, what + " is not a finite point");
+    const int b = find_block_containing(model_, p);
+    if (b < 0)
+      fail(ref, what + " (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) +
+                    ") lies in no block");
+    return b;
+  }
+
+  void add_loads() {
+    const LoadsSpec& l = spec_.loads;
+    if (!std::isfinite(l.gravity.x()) || !std::isfinite(l.gravity.y()))
+      fail({0, "loads.gravity"}, "gravity must be finite");
+    model_.loads.gravity = l.gravity;
+    for (const PointLoadSpec& p : l.points) {
+      if (!std::isfinite(p.force.x()) || !std::isfinite(p.force.y()))
+        fail(p.source, "force must be finite");
+      model_.loads.points.push_back({block_at(p.point, p.source, "the point"), p.point, p.force});
+    }
+    for (const TractionSpec& t : l.tractions) {
+      if (!std::isfinite(t.normal) || !std::isfinite(t.shear))
+        fail(t.source, "traction must be finite");
+      bool any = false;
+      for (const BoundaryEdge& e : model_.boundary) {
+        if (!selects(t.where, e.segment, model_.tolerance)) continue;
+        any = true;
+        model_.loads.tractions.push_back({e.polygon, e.segment, e.outward_normal, t.normal, t.shear});
+      }
+      if (!any) fail(t.source, "selects no boundary edge");
+    }
+  }
+
+  void add_monitors() {
+    for (const MonitorSpec& m : spec_.monitors) {
+      model_.monitors.push_back({m.name, block_at(m.point, m.source, "the monitor point"), m.point});
+    }
+  }
+
+  const CaseSpec& spec_;
+  Model model_;
+  std::map<std::string, int> block_material_index_;
+  std::map<std::string, int> joint_material_index_;
+  std::vector<Polygon> polygons_;
+  std::vector<SharedEdge> shared_;
+};
+
+}  // namespace
+
+Model build_model(const CaseSpec& spec) { return Builder(spec).build(); }
+
+int find_block_containing(const Model& model, const Vec2& p) {
+  for (int k = 0; k < model.n_blocks(); ++k) {
+    if (contains(model.blocks[k].polygon, p, model.tolerance)) return k;
+  }
+  return -1;
+}
+
+}  // namespace bimrock

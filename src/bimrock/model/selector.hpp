@@ -1,0 +1,28 @@
+#pragma once
+/// @file Choosing boundary edges or interfaces by where they are: on a line, inside a box, or by
+/// the orientation of their trace.
+#include <bimrock/geometry/bbox.hpp>
+#include <bimrock/geometry/segment.hpp>
+#include <bimrock/model/errors.hpp>
+
+namespace bimrock {
+
+struct Selector {
+  enum class Kind {
+    all,          ///< every segment
+    line,         ///< segments lying on `line` (both ends within tol of the segment `line`)
+    box,          ///< segments with both ends inside `box` (grown by tol)
+    orientation,  ///< segments whose trace makes `angle_deg` (mod 180) with the x-axis
+  };
+  Kind kind = Kind::all;
+  Segment line;
+  BBox box;
+  double angle_deg = 0.0;
+  double angle_tolerance_deg = 1.0;
+  SourceRef source;
+};
+
+/// True when the selector picks segment s (tol: the model's length tolerance).
+bool selects(const Selector& sel, const Segment& s, double tol);
+
+}  // namespace bimrock

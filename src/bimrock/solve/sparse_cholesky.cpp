@@ -1,0 +1,107 @@
+#include <bimrock/solve/sparse_cholesky.hpp>
+
+#include <stdexcept>
+
+#include <cholmod.h>
+
+namespace bimrock {
+
+struct SparseCholesky::Impl {
+  cholmod_common common{};
+  cholmod_factor* factor = nullptr;
+
+  Impl() {
+    cholmod_l_start(&common);
+    common.print = 0;  // we report failures ourselves
+  }
+  ~Impl() {
+    if (factor) cholmod_l_free_factor(&factor, &common);
+    cholmod_l_finish(&common);
+  }
+
+  // A cholmod view of the Eigen matrix (no copy): stype -1 reads the lower triangle.
+  static cholmod_sparse view(const CholmodMatrix& a) {
+    cholmod_sparse s{};
+    s.nrow = static_cast<size_t>(a.rows());
+    s.ncol = static_cast<size_t>(a.cols());
+    s.nzmax = static_cast<size_t>(a.nonZeros());
+    s.p = const_cast<std::int64_t*>(a.outerIndexPtr());
+    s.i = const_cast<std::int64_t*>(a.innerIndexPtr());
+    s.x = const_cast<double*>(a.valuePtr());
+    s.stype = -1;
+    s.itype = CHOLMOD_LONG;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    return s;
+  }
+
+  static cholmod_dense view(const Eigen::MatrixXd& b) {
+    cholmod_dense d{};
+    d.nrow = static_cast<size_t>(b.rows());
+    d.ncol = static_cast<size_t>(b.cols());
+    d.nzmax = d.nrow * d.ncol;
+    d.d = d.nrow;
+    d.x = const_cast<double*>(b.data());
+    d.xtype = CHOLMOD_REAL;
+    d.dtype = CHOLMOD_DOUBLE;
+    return d;
+  }
+};
+
+SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
+SparseCholesky::~SparseCholesky() = default;
+
+void SparseCholesky::analyze(const CholmodMatrix& lower) {
+  if (!lower.isCompressed()) throw std::logic_error("SparseCholesky: matrix must be compressed");
+  if (impl_->factor) cholmod_l_free_factor(&impl_->factor, &impl_->common);
+  cholmod_sparse a = Impl::view(lower);
+  impl_->factor = cholmod_l_analyze(&a, &impl_->common);
+  if (!impl_->factor) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  n_ = lower.rows();
+  factorized_ = false;
+}
+
+bool SparseCholesky::factorize(const CholmodMatrix& lower) {
+  if (!impl_->factor) analyze(lower);
+  cholmod_sparse a = Impl::view(lower);
+  cholmod_l_factorize(&a, impl_->factor, &impl_->common);
+  if (impl_->common.status == CHOLMOD_OUT_OF_MEMORY)
+    throw std::runtime_error("CHOLMOD factorize: out of memory");
+  const auto minor = static_cast<std::int64_t>(impl_->factor->minor);
+  if (impl_->common.status == CHOLMOD_NOT_POSDEF || minor < n_) {
+    const auto* perm = static_cast<const std::int64_t*>(impl_->factor->Perm);
+    failed_column_ = perm ? perm[minor] : minor;
+    factorized_ = false;
+    return false;
+  }
+  failed_column_ = -1;
+  factorized_ = true;
+  return true;
+}
+
+std::int64_t SparseCholesky::factor_nonzeros() const {
+  if (!impl_->factor) return 0;
+  cholmod_factor* f = impl_->factor;
+  if (f->is_super) return static_cast<std::int64_t>(f->xsize);
+  return static_cast<std::int64_t>(f->nzmax);
+}
+
+Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {
+  if (!factorized_) throw std::logic_error("SparseCholesky::solve before a successful factorize");
+  cholmod_dense rhs = Impl::view(b);
+  cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, impl_->factor, &rhs, &impl_->common);
+  if (!x) throw std::runtime_error("CHOLMOD solve failed");
+  Eigen::MatrixXd out =
+      Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), b.rows(), b.cols());
+  cholmod_l_free_dense(&x, &impl_->common);
+  return out;
+}
+
+Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
+  Eigen::MatrixXd m = b;
+  return solve(m).col(0);
+}
+
+}  // namespace bimrock

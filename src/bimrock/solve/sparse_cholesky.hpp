@@ -1,0 +1,47 @@
+#pragma once
+/// @file Sparse Cholesky factorization of the stiffness K with CHOLMOD (64-bit indices).
+/// Pattern first (analyze: fill-reducing ordering, symbolic factor), values second (factorize),
+/// so one factor object serves every load increment of an analysis.
+#include <cstdint>
+#include <memory>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+namespace bimrock {
+
+using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>;
+
+class SparseCholesky {
+ public:
+  SparseCholesky();
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  /// Symbolic analysis of the pattern of `lower` (the lower triangle of a symmetric matrix).
+  void analyze(const CholmodMatrix& lower);
+
+  /// Numeric factorization; false when the matrix is not positive definite, in which case
+  /// failed_column() names the original column where the factorization broke down.
+  bool factorize(const CholmodMatrix& lower);
+
+  [[nodiscard]] bool factorized() const { return factorized_; }
+  [[nodiscard]] std::int64_t failed_column() const { return failed_column_; }
+  [[nodiscard]] std::int64_t rows() const { return n_; }
+  /// Non-zeros of the factor L (a measure of its memory: 8 bytes each plus indices).
+  [[nodiscard]] std::int64_t factor_nonzeros() const;
+
+  /// x = K^-1 b for one or several right-hand sides.
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::int64_t n_ = 0;
+  std::int64_t failed_column_ = -1;
+  bool factorized_ = false;
+};
+
+}  // namespace bimrock
