@@ -1,3 +1,75 @@
-// Placeholder: replaced by the command line once io is in place.
+// The bimrock command line: `run` a case, `check` a case without solving.
+// Errors a user can cause (InputError, ModelError) are caught here, once, and reported as one
+// clear message with a non-zero exit; nothing is written to the output folder then.
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <fmt/core.h>
+
 #include <bimrock/analysis/elastic_analysis.hpp>
-int main() { return 0; }
+#include <bimrock/io/case_reader.hpp>
+#include <bimrock/io/results_writer.hpp>
+
+#include "bimrock/app/report.hpp"
+
+namespace {
+
+enum ExitCode { kOk = 0, kInputError = 2, kModelError = 3, kInternalError = 4 };
+
+std::filesystem::path default_output(const std::string& case_file) {
+  return std::filesystem::path("results") / std::filesystem::path(case_file).stem();
+}
+
+int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
+  const bimrock::Case c = bimrock::read_case_file(case_file);
+  const bimrock::Model model = bimrock::build_model(c.spec);
+  const bimrock::ElasticSolution solution = bimrock::solve_elastic(model);
+  if (out.empty()) out = default_output(case_file);
+  bimrock::write_elastic_results(model, solution, c.output, out);
+  if (!quiet) bimrock::print_summary(model, solution, out);
+  return kOk;
+}
+
+int check(const std::string& case_file, bool quiet) {
+  const bimrock::Case c = bimrock::read_case_file(case_file);
+  const bimrock::Model model = bimrock::build_model(c.spec);
+  if (!quiet) bimrock::print_model(model);
+  return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"bimrock: block-interfaces model of jointed rock masses (SI units)"};
+  app.require_subcommand(1);
+  bool quiet = false;
+  app.add_flag("-q,--quiet", quiet, "print nothing but errors");
+
+  std::string case_file;
+  std::string output;
+  CLI::App* run_cmd = app.add_subcommand("run", "solve a case and write its results");
+  run_cmd->add_option("case", case_file, "case file (YAML)")->required();
+  run_cmd->add_option("-o,--output", output, "results folder (default results/<case name>)");
+
+  CLI::App* check_cmd = app.add_subcommand("check", "read and check a case without solving it");
+  check_cmd->add_option("case", case_file, "case file (YAML)")->required();
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (*run_cmd) return run(case_file, output, quiet);
+    if (*check_cmd) return check(case_file, quiet);
+  } catch (const bimrock::InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kInputError;
+  } catch (const bimrock::ModelError& e) {
+    fmt::print(stderr, "error: {}: {}\n", case_file, e.what());
+    return kModelError;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "internal error: {} (please report it with the case file)\n", e.what());
+    return kInternalError;
+  }
+  return kOk;
+}

@@ -5,9 +5,11 @@
 namespace bimrock {
 
 double signed_area(const Polygon& p) {
+  // Shoelace relative to the first vertex: exact-ish far from the origin (coordinates in UTM).
+  const Vec2 o = p.vertices.front();
   double twice = 0.0;
   const std::size_t n = p.size();
-  for (std::size_t k = 0; k < n; ++k) twice += cross(p.vertices[k], p.vertices[(k + 1) % n]);
+  for (std::size_t k = 1; k + 1 < n; ++k) twice += cross(p.vertices[k] - o, p.vertices[k + 1] - o);
   return 0.5 * twice;
 }
 
