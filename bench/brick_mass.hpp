@@ -12,7 +12,12 @@ inline CaseSpec brick_mass_case(int n_blocks) {
   const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(double(n_blocks)))));
   CaseSpec c;
   c.file = "bench";
-  c.block_materials = {{"rock", 89e9, 0.26, 26e3, {}}};
+  BlockMaterial rock;
+  rock.name = "rock";
+  rock.young = 89e9;
+  rock.poisson = 0.26;
+  rock.unit_weight = 26e3;
+  c.block_materials = {rock};
   JointMaterial joint;
   joint.name = "joint";
   joint.normal_stiffness = 531.9e9;

@@ -35,7 +35,7 @@ void BM_AnalyzePattern(benchmark::State& state) {
   const SparseMatrix k = assemble_stiffness_lower(m);
   for (auto _ : state) {
     SparseCholesky chol;
-    chol.analyze(k);
+    chol.analyze(k, 6);
   }
   set_size_counters(state, m);
 }
@@ -44,7 +44,7 @@ void BM_Factorize(benchmark::State& state) {
   const Model m = build_model(bench::brick_mass_case(static_cast<int>(state.range(0))));
   const SparseMatrix k = assemble_stiffness_lower(m);
   SparseCholesky chol;
-  chol.analyze(k);
+  chol.analyze(k, 6);
   for (auto _ : state) benchmark::DoNotOptimize(chol.factorize(k));
   set_size_counters(state, m);
   state.counters["factor_nnz"] = static_cast<double>(chol.factor_nonzeros());
@@ -55,7 +55,7 @@ void BM_Solve(benchmark::State& state) {
   const SparseMatrix k = assemble_stiffness_lower(m);
   const Eigen::VectorXd p = assemble_loads(m, m.loads);
   SparseCholesky chol;
-  chol.analyze(k);
+  chol.analyze(k, 6);
   chol.factorize(k);
   for (auto _ : state) benchmark::DoNotOptimize(chol.solve(p));
   set_size_counters(state, m);

@@ -25,7 +25,13 @@ inline Selector with_orientation(double angle_deg) {
 }
 
 inline BlockMaterial rock(double young, double poisson, double unit_weight = 0.0) {
-  return {"rock", young, poisson, unit_weight, {0, "materials.rock"}};
+  BlockMaterial m;
+  m.name = "rock";
+  m.young = young;
+  m.poisson = poisson;
+  m.unit_weight = unit_weight;
+  m.source = {0, "materials.rock"};
+  return m;
 }
 
 inline JointMaterial springs(const std::string& name, double kn, double ks,

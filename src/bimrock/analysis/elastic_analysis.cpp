@@ -22,7 +22,7 @@ ElasticSolution solve_elastic(const Model& model) {
   SparseCholesky cholesky;
   {
     ScopedTimer t(s.timings, "analyze");
-    cholesky.analyze(k);
+    cholesky.analyze(k, 6);
   }
   {
     ScopedTimer t(s.timings, "factorize");

@@ -1,5 +1,7 @@
 #include <bimrock/assembly/global_system.hpp>
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 #include <bimrock/assembly/integration_points.hpp>
@@ -9,46 +11,97 @@
 namespace bimrock {
 namespace {
 
-using Triplets = std::vector<Eigen::Triplet<double, std::int64_t>>;
+// The lower triangle of K in compressed columns, its pattern built from the block graph first
+// (each block couples with itself and with its neighbours across interfaces), so values are
+// added in place: no triplet list five times the size of K.
+class LowerAssembler {
+ public:
+  LowerAssembler(const Model& model, SparseMatrix& k) : neighbours_(model.n_blocks()), k_(k) {
+    for (const Interface& f : model.interfaces) {
+      if (f.is_support()) continue;
+      const int lo = std::min(f.block_i, f.block_j);
+      const int hi = std::max(f.block_i, f.block_j);
+      neighbours_[lo].push_back(hi);
+    }
+    const std::int64_t n = model.n_dofs();
+    std::int64_t nnz = 0;
+    for (int b = 0; b < model.n_blocks(); ++b) {
+      auto& nb = neighbours_[b];
+      std::sort(nb.begin(), nb.end());
+      nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+      nnz += 21 + 36 * static_cast<std::int64_t>(nb.size());
+    }
+    // Write the compressed-column arrays directly: rows sorted within each column.
+    k_.resize(n, n);
+    k_.resizeNonZeros(nnz);
+    std::int64_t* outer = k_.outerIndexPtr();
+    std::int64_t* inner = k_.innerIndexPtr();
+    std::int64_t next = 0;
+    for (int b = 0; b < model.n_blocks(); ++b) {
+      for (int a = 0; a < 6; ++a) {
+        const std::int64_t c = 6 * b + a;
+        outer[c] = next;
+        for (std::int64_t r = c; r < 6 * b + 6; ++r) inner[next++] = r;
+        for (int j : neighbours_[b])
+          for (int d = 0; d < 6; ++d) inner[next++] = 6 * j + d;
+      }
+    }
+    outer[n] = next;
+    std::fill(k_.valuePtr(), k_.valuePtr() + nnz, 0.0);
+  }
 
-// Adds the lower triangle of the local matrix `k` whose local block r belongs to block ids[r].
-template <int N>
-void scatter_lower(const Eigen::Matrix<double, N, N>& k, const std::array<int, N / 6>& ids,
-                   Triplets& out) {
-  for (int c = 0; c < N; ++c) {
-    const int gc = 6 * ids[c / 6] + c % 6;
-    for (int r = 0; r < N; ++r) {
-      const int gr = 6 * ids[r / 6] + r % 6;
-      if (gr >= gc && k(r, c) != 0.0) out.emplace_back(gr, gc, k(r, c));
+  // Adds the lower triangle of the local matrix whose local block r belongs to block ids[r].
+  template <int N>
+  void add(const Eigen::Matrix<double, N, N>& local, const std::array<int, N / 6>& ids) {
+    for (int c = 0; c < N; ++c) {
+      const std::int64_t gc = 6 * ids[c / 6] + c % 6;
+      for (int r = 0; r < N; ++r) {
+        const std::int64_t gr = 6 * ids[r / 6] + r % 6;
+        if (gr >= gc) k_.valuePtr()[position(gr, gc)] += local(r, c);
+      }
     }
   }
-}
+
+ private:
+  // Index of entry (row, col), row >= col, in the value array.
+  std::int64_t position(std::int64_t row, std::int64_t col) const {
+    const std::int64_t b = col / 6;
+    const std::int64_t a = col % 6;
+    std::int64_t offset = row - col;  // inside the diagonal block
+    if (row >= 6 * b + 6) {
+      const auto& nb = neighbours_[b];
+      const auto it = std::lower_bound(nb.begin(), nb.end(), static_cast<int>(row / 6));
+      offset = (6 - a) + 6 * (it - nb.begin()) + row % 6;
+    }
+    return k_.outerIndexPtr()[col] + offset;
+  }
+
+  std::vector<std::vector<int>> neighbours_;  // per block, the neighbours of higher index
+  SparseMatrix& k_;  // assembled in place: Eigen 3.4's SparseMatrix has no move constructor
+};
 
 }  // namespace
 
 SparseMatrix assemble_stiffness_lower(const Model& model) {
-  Triplets triplets;
-  triplets.reserve(21 * model.blocks.size() + 78 * model.interfaces.size() * 2);
+  SparseMatrix lower;
+  LowerAssembler k(model, lower);
   const double t = model.settings.thickness;
-  for (int k = 0; k < model.n_blocks(); ++k) {
-    const Block& b = model.blocks[k];
+  for (int b = 0; b < model.n_blocks(); ++b) {
+    const Block& block = model.blocks[b];
     const Eigen::Matrix3d d_b =
-        elasticity_matrix(model.block_materials[b.material], model.settings.plane);
-    scatter_lower<6>(block_stiffness(b, d_b, t), {k}, triplets);
+        elasticity_matrix(model.block_materials[block.material], model.settings.plane);
+    k.add<6>(block_stiffness(block, d_b, t), {b});
   }
   for (const Interface& f : model.interfaces) {
     const Vec2& ci = model.blocks[f.block_i].centroid;
     if (f.is_support()) {
-      scatter_lower<6>(support_stiffness(f, ci, t), {f.block_i}, triplets);
+      k.add<6>(support_stiffness(f, ci, t), {f.block_i});
     } else {
       const Vec2& cj = model.blocks[f.block_j].centroid;
-      scatter_lower<12>(interface_stiffness(f, ci, cj, t), {f.block_i, f.block_j}, triplets);
+      k.add<12>(interface_stiffness(f, ci, cj, t), {f.block_i, f.block_j});
     }
   }
-  SparseMatrix k(model.n_dofs(), model.n_dofs());
-  k.setFromTriplets(triplets.begin(), triplets.end());
-  k.makeCompressed();
-  return k;
+  return lower;
 }
 
 SparseMatrix full_from_lower(const SparseMatrix& lower) {

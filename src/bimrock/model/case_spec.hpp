@@ -72,6 +72,26 @@ struct MonitorSpec {
   SourceRef source;
 };
 
+/// Load control scales the stage's loads by the load factor; displacement control instead
+/// prescribes the displacement of a monitor point along `direction` and finds the load factor
+/// (it follows softening past the peak).
+struct DisplacementControlSpec {
+  std::string monitor;
+  Vec2 direction = Vec2::UnitX();
+  double displacement = 0.0;  ///< total over the stage [m]
+  SourceRef source;
+};
+
+/// A load stage of a nonlinear analysis: its loads are added to those of the earlier stages in
+/// `increments` equal steps; stresses and plastic state carry from one stage into the next.
+struct StageSpec {
+  std::string name;
+  LoadsSpec loads;
+  int increments = 1;
+  std::optional<DisplacementControlSpec> control;
+  SourceRef source;
+};
+
 struct CaseSpec {
   std::string file;  ///< the case file, for error messages
   std::string title;
@@ -82,7 +102,8 @@ struct CaseSpec {
   std::string default_joint;  ///< joint material of interfaces no rule picks
   std::vector<JointRule> joint_rules;
   std::vector<SupportSpec> supports;
-  LoadsSpec loads;
+  LoadsSpec loads;  ///< the loads of an elastic analysis (no stages)
+  std::vector<StageSpec> stages;  ///< a nonlinear analysis when not empty
   std::vector<MonitorSpec> monitors;
 };
 

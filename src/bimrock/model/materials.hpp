@@ -1,10 +1,12 @@
 #pragma once
 /// @file Elastic material laws of blocks and joints (SI: Pa, Pa/m, N/m^3, m).
+#include <optional>
 #include <string>
 
 #include <Eigen/Core>
 
 #include <bimrock/model/errors.hpp>
+#include <bimrock/model/strength.hpp>
 
 namespace bimrock {
 
@@ -17,6 +19,7 @@ struct BlockMaterial {
   double poisson = 0.0;      ///< nu [-], 0 <= nu < 0.5
   double unit_weight = 0.0;  ///< gamma [N/m^3]; gravity loads are gamma * direction
   SourceRef source;
+  std::optional<BlockStrength> strength;  ///< none: the block stays elastic
 };
 
 /// Elasticity matrix D_b of eq. 2 for [eps_x, eps_y, gamma_xy] (engineering shear strain).
@@ -42,6 +45,7 @@ struct JointMaterial {
   Integration integration = Integration::lobatto;
   int subdivisions = 1;  ///< each interface is split into this many equal pieces
   SourceRef source;
+  std::optional<JointStrength> strength;  ///< none: the joint stays elastic (glued)
 };
 
 /// k_n and k_s of an interface layer of thickness h made of a material (E, nu), eq. 7.

@@ -1,6 +1,7 @@
 #pragma once
 /// @file The block-interfaces model as plain data, checked once when built (build_model).
 /// Units: SI throughout (m, Pa, Pa/m, N, N/m^3).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,20 @@ struct Loads {
   std::vector<Traction> tractions;
 };
 
+struct DisplacementControl {
+  int monitor = 0;  ///< index into Model::monitors
+  Vec2 direction = Vec2::UnitX();  ///< unit
+  double displacement = 0.0;  ///< total over the stage [m]
+};
+
+struct Stage {
+  std::string name;
+  Loads loads;  ///< added to the loads of earlier stages, in `increments` equal steps
+  int increments = 1;
+  std::optional<DisplacementControl> control;
+  SourceRef source;
+};
+
 struct Monitor {
   std::string name;
   int block = 0;
@@ -71,7 +86,8 @@ struct Model {
   std::vector<Block> blocks;
   std::vector<Interface> interfaces;  ///< block-block interfaces first, then supports
   std::vector<BoundaryEdge> boundary;  ///< the outline (supported parts included)
-  Loads loads;
+  Loads loads;  ///< of an elastic analysis
+  std::vector<Stage> stages;  ///< of a nonlinear analysis
   std::vector<Monitor> monitors;
   double tolerance = 0.0;  ///< length tolerance, see model_tolerance()
 

@@ -26,6 +26,7 @@ class Builder {
     add_supports();
     add_loads();
     add_monitors();
+    add_stages();
     return std::move(model_);
   }
 
@@ -205,15 +206,15 @@ class Builder {
     return b;
   }
 
-  void add_loads() {
-    const LoadsSpec& l = spec_.loads;
+  Loads resolve_loads(const LoadsSpec& l, const std::string& where) const {
     if (!std::isfinite(l.gravity.x()) || !std::isfinite(l.gravity.y()))
-      fail({0, "loads.gravity"}, "gravity must be finite");
-    model_.loads.gravity = l.gravity;
+      fail({0, where + ".gravity"}, "gravity must be finite");
+    Loads loads;
+    loads.gravity = l.gravity;
     for (const PointLoadSpec& p : l.points) {
       if (!std::isfinite(p.force.x()) || !std::isfinite(p.force.y()))
         fail(p.source, "force must be finite");
-      model_.loads.points.push_back({block_at(p.point, p.source, "the point"), p.point, p.force});
+      loads.points.push_back({block_at(p.point, p.source, "the point"), p.point, p.force});
     }
     for (const TractionSpec& t : l.tractions) {
       if (!std::isfinite(t.normal) || !std::isfinite(t.shear))
@@ -222,9 +223,33 @@ class Builder {
       for (const BoundaryEdge& e : model_.boundary) {
         if (!selects(t.where, e.segment, model_.tolerance)) continue;
         any = true;
-        model_.loads.tractions.push_back({e.polygon, e.segment, e.outward_normal, t.normal, t.shear});
+        loads.tractions.push_back({e.polygon, e.segment, e.outward_normal, t.normal, t.shear});
       }
       if (!any) fail(t.source, "selects no boundary edge");
+    }
+    return loads;
+  }
+
+  void add_loads() { model_.loads = resolve_loads(spec_.loads, "loads"); }
+
+  void add_stages() {
+    for (const StageSpec& st : spec_.stages) {
+      Stage stage{st.name, resolve_loads(st.loads, st.source.item), st.increments, std::nullopt,
+                  st.source};
+      if (st.increments < 1) fail(st.source, "increments must be at least 1");
+      if (st.control) {
+        const DisplacementControlSpec& c = *st.control;
+        int monitor = -1;
+        for (std::size_t k = 0; k < model_.monitors.size(); ++k)
+          if (model_.monitors[k].name == c.monitor) monitor = static_cast<int>(k);
+        if (monitor < 0) fail(c.source, "unknown monitor '" + c.monitor + "'");
+        if (!std::isfinite(c.displacement) || c.displacement == 0.0)
+          fail(c.source, "the prescribed displacement must be a non-zero number");
+        if (!std::isfinite(c.direction.norm()) || c.direction.norm() == 0.0)
+          fail(c.source, "the direction must be a non-zero vector");
+        stage.control = DisplacementControl{monitor, c.direction.normalized(), c.displacement};
+      }
+      model_.stages.push_back(std::move(stage));
     }
   }
 

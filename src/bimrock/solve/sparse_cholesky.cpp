@@ -1,6 +1,7 @@
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 #include <stdexcept>
+#include <vector>
 
 #include <cholmod.h>
 
@@ -53,11 +54,59 @@ struct SparseCholesky::Impl {
 SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
 SparseCholesky::~SparseCholesky() = default;
 
-void SparseCholesky::analyze(const CholmodMatrix& lower) {
+namespace {
+
+// The lower-triangular pattern of the graph of block_size x block_size blocks of `lower`.
+CholmodMatrix block_pattern(const CholmodMatrix& lower, int block_size) {
+  const std::int64_t nb = lower.rows() / block_size;
+  std::vector<Eigen::Triplet<double, std::int64_t>> entries;
+  std::vector<std::int64_t> seen(static_cast<std::size_t>(nb), -1);
+  for (std::int64_t kb = 0; kb < nb; ++kb) {
+    for (std::int64_t c = kb * block_size; c < (kb + 1) * block_size; ++c) {
+      for (CholmodMatrix::InnerIterator it(lower, c); it; ++it) {
+        const std::int64_t rb = it.row() / block_size;
+        if (rb >= kb && seen[rb] != kb) {
+          seen[rb] = kb;
+          entries.emplace_back(rb, kb, 1.0);
+        }
+      }
+    }
+  }
+  CholmodMatrix pattern(nb, nb);
+  pattern.setFromTriplets(entries.begin(), entries.end());
+  pattern.makeCompressed();
+  return pattern;
+}
+
+}  // namespace
+
+void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
   if (!lower.isCompressed()) throw std::logic_error("SparseCholesky: matrix must be compressed");
   if (impl_->factor) cholmod_l_free_factor(&impl_->factor, &impl_->common);
   cholmod_sparse a = Impl::view(lower);
-  impl_->factor = cholmod_l_analyze(&a, &impl_->common);
+  cholmod_common& cm = impl_->common;
+  if (block_size > 1 && lower.rows() % block_size == 0 && lower.rows() > block_size) {
+    // Order the block graph with CHOLMOD's default strategy, expand the permutation to the
+    // unknowns, and analyze the full matrix with that given ordering.
+    const CholmodMatrix pattern = block_pattern(lower, block_size);
+    cholmod_sparse p = Impl::view(pattern);
+    cholmod_factor* coarse = cholmod_l_analyze(&p, &cm);
+    if (!coarse) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+    const auto* coarse_perm = static_cast<const std::int64_t*>(coarse->Perm);
+    std::vector<std::int64_t> perm(static_cast<std::size_t>(lower.rows()));
+    for (std::int64_t k = 0; k < pattern.rows(); ++k)
+      for (int d = 0; d < block_size; ++d) perm[block_size * k + d] = block_size * coarse_perm[k] + d;
+    cholmod_l_free_factor(&coarse, &cm);
+    const int saved_nmethods = cm.nmethods;
+    const int saved_ordering = cm.method[0].ordering;
+    cm.nmethods = 1;
+    cm.method[0].ordering = CHOLMOD_GIVEN;
+    impl_->factor = cholmod_l_analyze_p(&a, perm.data(), nullptr, 0, &cm);
+    cm.nmethods = saved_nmethods;
+    cm.method[0].ordering = saved_ordering;
+  } else {
+    impl_->factor = cholmod_l_analyze(&a, &cm);
+  }
   if (!impl_->factor) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   n_ = lower.rows();
   factorized_ = false;

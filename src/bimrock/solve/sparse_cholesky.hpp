@@ -20,7 +20,10 @@ class SparseCholesky {
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 
   /// Symbolic analysis of the pattern of `lower` (the lower triangle of a symmetric matrix).
-  void analyze(const CholmodMatrix& lower);
+  /// With block_size > 1 the fill-reducing ordering is computed on the graph of dense
+  /// block_size x block_size blocks (the 6 unknowns of a block move together): 36 times fewer
+  /// entries to order for the same permutation quality.
+  void analyze(const CholmodMatrix& lower, int block_size = 1);
 
   /// Numeric factorization; false when the matrix is not positive definite, in which case
   /// failed_column() names the original column where the factorization broke down.

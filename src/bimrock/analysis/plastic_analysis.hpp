@@ -1,0 +1,77 @@
+#pragma once
+/// @file Elastoplastic and contact analysis by the Parametric Variational Principle (eqs. 16-35):
+/// load stages split into increments, each increment one linear complementarity problem, the
+/// elastic stiffness factorized once for the whole analysis, no equilibrium iterations.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <bimrock/analysis/timings.hpp>
+#include <bimrock/assembly/yield_system.hpp>
+
+namespace bimrock {
+
+struct PlasticOptions {
+  /// A failed increment is bisected until the collapse bracket is this narrow (relative).
+  double bracket_tolerance = 1e-4;
+  int max_bisections = 40;
+  /// Rounds of "solve, check every yield function, add the violated ones" per increment.
+  int max_rounds = 30;
+  /// A yield function counts as violated above this fraction of the stress scale.
+  double yield_tolerance = 1e-9;
+};
+
+/// The state the analysis carries from increment to increment.
+struct AnalysisState {
+  Eigen::VectorXd u;                  ///< total block unknowns
+  std::vector<PlasticState> points;   ///< per yield point
+  double stage_factor = 0.0;          ///< fraction of the current stage's loads applied
+};
+
+struct IncrementRecord {
+  int stage = 0;
+  int increment = 0;          ///< 1-based within the stage, counting bisected steps
+  double stage_factor = 0.0;  ///< after the increment
+  std::vector<Vec2> monitors;  ///< monitor displacements after the increment [m]
+  int yielding_points = 0;    ///< points with plastic flow in this increment
+  int open_points = 0;        ///< interface points open after the increment
+  int lcp_size = 0;
+  int pivots = 0;
+  int rounds = 0;             ///< LCP solves (candidate rounds) of the increment
+  double seconds = 0.0;
+};
+
+/// One active yield mode of a collapse mechanism.
+struct MechanismEntry {
+  int point = 0;
+  int mode = 0;
+  double multiplier = 0.0;  ///< normalized to the largest
+};
+
+/// The structure could not carry a load increment: the collapse load lies in
+/// [carried, failed] (stage factors) and the mechanism is that of the last carried step.
+struct Collapse {
+  int stage = 0;
+  double carried = 0.0;
+  double failed = 0.0;
+  std::vector<MechanismEntry> mechanism;
+  Eigen::VectorXd direction;  ///< displacement increment of the last carried step, unit norm
+};
+
+struct PlasticResult {
+  std::vector<YieldPoint> points;
+  AnalysisState state;
+  std::vector<IncrementRecord> history;
+  std::optional<Collapse> collapse;
+  Timings timings;
+};
+
+/// Called after every carried increment (e.g. to write its results).
+using IncrementCallback = std::function<void(const IncrementRecord&, const AnalysisState&)>;
+
+/// Runs every stage of the model. Throws ModelError when the structure is not fully supported.
+PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& options = {},
+                                   const IncrementCallback& on_increment = {});
+
+}  // namespace bimrock

@@ -1,0 +1,16 @@
+#pragma once
+/// @file The plastic state of one yield point, kept apart from the laws (STYLE.md practice 3).
+#include <Eigen/Core>
+
+namespace bimrock {
+
+struct PlasticState {
+  /// Interfaces: plastic relative displacement [delta_n^p, delta_s^p] (first 2 entries) [m];
+  /// blocks: plastic strain [eps_x, eps_y, gamma_xy].
+  Eigen::Vector3d plastic = Eigen::Vector3d::Zero();
+  double slip = 0.0;     ///< accumulated plastic slip (or plastic multiplier of a block) kappa
+  double gap = 0.0;      ///< interfaces: current reversible opening (>= 0) [m]
+  double max_gap = 0.0;  ///< interfaces: the largest opening so far, softens sigma_t [m]
+};
+
+}  // namespace bimrock

@@ -1,0 +1,46 @@
+#include <bimrock/assembly/yield_points.hpp>
+
+#include <map>
+#include <tuple>
+
+#include <bimrock/assembly/integration_points.hpp>
+
+namespace bimrock {
+
+std::vector<YieldPoint> make_yield_points(const Model& model) {
+  std::vector<YieldPoint> points;
+  const double t = model.settings.thickness;
+  // Merge key: the two blocks and the point, snapped to the model tolerance.
+  std::map<std::tuple<int, int, long long, long long>, std::size_t> seen;
+  const double snap = std::max(model.tolerance, 1e-300);
+  for (int k = 0; k < model.n_interfaces(); ++k) {
+    const Interface& f = model.interfaces[k];
+    if (f.joint_material < 0 || !model.joint_materials[f.joint_material].strength) continue;
+    for (const IntegrationPoint& ip : integration_points(f.segment, f.integration)) {
+      const auto key = std::make_tuple(f.block_i, f.block_j, std::llround(ip.point.x() / snap),
+                                       std::llround(ip.point.y() / snap));
+      auto it = seen.find(key);
+      if (it != seen.end() && f.integration == Integration::lobatto) {
+        points[it->second].weight += t * ip.weight;
+        continue;
+      }
+      seen[key] = points.size();
+      points.push_back({YieldPoint::Kind::interface, k, f.block_i, f.block_j, ip.point, f.normal,
+                        t * ip.weight, f.joint_material});
+    }
+  }
+  for (int b = 0; b < model.n_blocks(); ++b) {
+    const Block& block = model.blocks[b];
+    if (!model.block_materials[block.material].strength) continue;
+    points.push_back({YieldPoint::Kind::block, b, b, kGround, block.centroid, Vec2::Zero(),
+                      t * block.area, block.material});
+  }
+  return points;
+}
+
+int n_modes(const Model& model, const YieldPoint& p) {
+  if (p.is_interface()) return 3;
+  return model.block_materials[p.material].strength->planes;
+}
+
+}  // namespace bimrock

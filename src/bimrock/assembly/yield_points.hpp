@@ -1,0 +1,32 @@
+#pragma once
+/// @file Where yield is checked (DESIGN.md section 3): the integration points of every interface
+/// whose joint has a strength law (end points for lobatto joints, so that blocks pivot about
+/// their corners and topple exactly), and every block with a strength law (on its mean stress).
+/// The shared end points of neighbouring pieces of one subdivided joint are merged.
+#include <vector>
+
+#include <bimrock/model/model.hpp>
+
+namespace bimrock {
+
+struct YieldPoint {
+  enum class Kind { interface, block };
+  Kind kind = Kind::interface;
+  int owner = 0;  ///< interface index (the first piece, for a merged point) or block index
+  int block_i = 0;
+  int block_j = kGround;  ///< interfaces only
+  Vec2 position;
+  Vec2 normal;           ///< interfaces only, from i into j
+  double weight = 0.0;   ///< t * length share [m^2] for interfaces, t * area [m^3] for blocks
+  int material = 0;      ///< joint or block material index
+
+  [[nodiscard]] bool is_interface() const { return kind == Kind::interface; }
+};
+
+std::vector<YieldPoint> make_yield_points(const Model& model);
+
+/// The number of yield modes (LCP rows) of a yield point: 3 for a joint (slip +, slip -,
+/// opening), the number of planes of the block's linearized criterion for a block.
+int n_modes(const Model& model, const YieldPoint& p);
+
+}  // namespace bimrock

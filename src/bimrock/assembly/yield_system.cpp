@@ -1,0 +1,55 @@
+#include <bimrock/assembly/yield_system.hpp>
+
+namespace bimrock {
+
+YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
+                                  const std::vector<PlasticState>& states,
+                                  const Eigen::VectorXd& u, const std::vector<int>& candidates) {
+  YieldSystem sys;
+  std::vector<Eigen::Triplet<double, std::int64_t>> phi;
+  std::vector<Eigen::Triplet<double, std::int64_t>> c;
+  std::vector<Eigen::MatrixXd> n_blocks;
+  std::vector<double> f0;
+  for (int p : candidates) {
+    const YieldPoint& point = points[p];
+    const LocalOperator op = local_operator(model, point);
+    const Eigen::MatrixXd d = local_stiffness(model, point);
+    const Eigen::VectorXd stress = local_stress(model, point, states[p], u);
+    const LocalYield y = linearize(model, point, states[p], stress);
+    const double w = point.weight;
+    const Eigen::MatrixXd a_d_e = w * y.a * d * op.e;       // scaled C rows, local columns
+    const Eigen::MatrixXd e_d_g = w * op.e.transpose() * d * y.g.transpose();  // Phi columns
+    const int first = sys.size();
+    for (int mode = 0; mode < y.a.rows(); ++mode) {
+      const int row = first + mode;
+      sys.rows.push_back({p, mode});
+      Eigen::Vector3d g = Eigen::Vector3d::Zero();
+      g.head(y.g.cols()) = y.g.row(mode).transpose();
+      sys.flow.push_back(g);
+      f0.push_back(w * y.f(mode));
+      for (int k = 0; k < op.n_blocks(); ++k) {
+        for (int dof = 0; dof < 6; ++dof) {
+          const std::int64_t global = 6 * op.blocks[k] + dof;
+          if (a_d_e(mode, 6 * k + dof) != 0.0) c.emplace_back(row, global, a_d_e(mode, 6 * k + dof));
+          if (e_d_g(6 * k + dof, mode) != 0.0) phi.emplace_back(global, row, e_d_g(6 * k + dof, mode));
+        }
+      }
+    }
+    n_blocks.push_back(w * (y.a * d * y.g.transpose() + y.h));
+  }
+  const int m = sys.size();
+  sys.phi.resize(model.n_dofs(), m);
+  sys.phi.setFromTriplets(phi.begin(), phi.end());
+  sys.c.resize(m, model.n_dofs());
+  sys.c.setFromTriplets(c.begin(), c.end());
+  sys.n = Eigen::MatrixXd::Zero(m, m);
+  int offset = 0;
+  for (const Eigen::MatrixXd& b : n_blocks) {
+    sys.n.block(offset, offset, b.rows(), b.cols()) = b;
+    offset += static_cast<int>(b.rows());
+  }
+  sys.f0 = Eigen::Map<const Eigen::VectorXd>(f0.data(), m);
+  return sys;
+}
+
+}  // namespace bimrock

@@ -1,0 +1,37 @@
+#pragma once
+/// @file The yield rows of one increment for the candidate yield points (eqs. 22-28):
+///   K dU = q + Phi lambda,   nu = -f0 - C dU + N lambda >= 0,  lambda >= 0,  lambda . nu = 0.
+/// Row r of a point with weight w is scaled by w, so that for associated flow C = Phi^T and N is
+/// symmetric, and the LCP matrix N - C K^-1 Phi is symmetric (DESIGN.md section 3).
+#include <vector>
+
+#include <Eigen/SparseCore>
+
+#include <bimrock/assembly/global_system.hpp>
+#include <bimrock/assembly/yield_modes.hpp>
+
+namespace bimrock {
+
+/// Which yield point and mode a row stands for (STYLE.md practice 7).
+struct YieldRow {
+  int point = 0;
+  int mode = 0;
+};
+
+struct YieldSystem {
+  std::vector<YieldRow> rows;
+  SparseMatrix phi;      ///< n_dofs x m: plastic loads of unit multipliers
+  SparseMatrix c;        ///< m x n_dofs: rate of each (scaled) yield function with dU
+  Eigen::MatrixXd n;     ///< m x m: local plastic coupling and hardening (block diagonal)
+  Eigen::VectorXd f0;    ///< m: (scaled) yield function values at the current state
+  std::vector<Eigen::Vector3d> flow;  ///< per row: the flow direction g (first 2 for joints)
+  [[nodiscard]] int size() const { return static_cast<int>(rows.size()); }
+};
+
+/// Builds the yield rows of every mode of the given yield points at their current state.
+/// @param candidates indices into `points`
+YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
+                                  const std::vector<PlasticState>& states,
+                                  const Eigen::VectorXd& u, const std::vector<int>& candidates);
+
+}  // namespace bimrock
