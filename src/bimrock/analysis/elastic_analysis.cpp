@@ -40,13 +40,14 @@ ElasticSolution solve_elastic(const Model& model) {
   return s;
 }
 
-void evaluate_fields(const Model& model, ElasticSolution& s) {
+void evaluate_fields(const Model& model, ElasticSolution& s, const PlasticParts& plastic) {
   s.blocks.clear();
   s.blocks.reserve(model.blocks.size());
-  for (int k = 0; k < model.n_blocks(); ++k) s.blocks.push_back(block_state(model, k, s.u));
+  for (int k = 0; k < model.n_blocks(); ++k) s.blocks.push_back(block_state(model, k, s.u, plastic));
   s.interfaces.clear();
   s.interfaces.reserve(model.interfaces.size());
-  for (const Interface& f : model.interfaces) s.interfaces.push_back(interface_state(model, f, s.u));
+  for (int k = 0; k < model.n_interfaces(); ++k)
+    s.interfaces.push_back(interface_state(model, k, s.u, plastic));
   s.mean_strain = mean_strain(model, s.u);
   s.monitor_displacements.clear();
   for (const Monitor& m : model.monitors)

@@ -22,7 +22,8 @@ struct ElasticSolution {
 /// every block and interface. Throws ModelError when the structure is not fully supported.
 ElasticSolution solve_elastic(const Model& model);
 
-/// Evaluates block, interface and monitor results of a displacement vector.
-void evaluate_fields(const Model& model, ElasticSolution& solution);
+/// Evaluates block, interface and monitor results of the displacement vector solution.u, less
+/// the plastic parts of a nonlinear analysis where given.
+void evaluate_fields(const Model& model, ElasticSolution& solution, const PlasticParts& plastic = {});
 
 }  // namespace bimrock

@@ -4,12 +4,16 @@
 
 namespace bimrock {
 
-BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u) {
+BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u,
+                       const PlasticParts& plastic) {
   const Block& b = model.blocks[block];
   BlockState s;
   s.d = u.segment<6>(6 * block);
   s.strain = s.d.tail<3>();
-  s.stress = elasticity_matrix(model.block_materials[b.material], model.settings.plane) * s.strain;
+  if (plastic.index && plastic.index->block_points[block] >= 0)
+    s.plastic = (*plastic.states)[plastic.index->block_points[block]].plastic;
+  s.stress = elasticity_matrix(model.block_materials[b.material], model.settings.plane) *
+             (s.strain - s.plastic);
   return s;
 }
 
@@ -17,7 +21,9 @@ Vec2 displacement_at(const Model& model, int block, const Vec2& p, const Eigen::
   return block_Q(model.blocks[block].centroid, p) * u.segment<6>(6 * block);
 }
 
-InterfaceState interface_state(const Model& model, const Interface& f, const Eigen::VectorXd& u) {
+InterfaceState interface_state(const Model& model, int interface, const Eigen::VectorXd& u,
+                               const PlasticParts& plastic) {
+  const Interface& f = model.interfaces[interface];
   InterfaceState state;
   const auto points = integration_points(f.segment, f.integration);
   const Eigen::Matrix2d t = interface_T(f.normal);
@@ -27,7 +33,10 @@ InterfaceState interface_state(const Model& model, const Interface& f, const Eig
     if (!f.is_support()) jump += displacement_at(model, f.block_j, p, u);
     state[k].point = p;
     state[k].delta = t * jump;
-    state[k].stress = {f.normal_stiffness * state[k].delta(0), f.shear_stiffness * state[k].delta(1)};
+    if (plastic.index && plastic.index->interface_points[interface][k] >= 0)
+      state[k].plastic = (*plastic.states)[plastic.index->interface_points[interface][k]].plastic.head<2>();
+    const Eigen::Vector2d elastic = state[k].delta - state[k].plastic;
+    state[k].stress = {f.normal_stiffness * elastic(0), f.shear_stiffness * elastic(1)};
   }
   return state;
 }

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 
 #include <bimrock/assembly/kinematics.hpp>
+#include <bimrock/assembly/plastic_state.hpp>
+#include <bimrock/assembly/yield_points.hpp>
 #include <bimrock/model/model.hpp>
 
 namespace bimrock {
@@ -13,20 +15,32 @@ namespace bimrock {
 struct BlockState {
   Vec6 d;                   ///< [u0, v0, theta, eps_x, eps_y, gamma_xy]
   Eigen::Vector3d strain;   ///< [eps_x, eps_y, gamma_xy]
-  Eigen::Vector3d stress;   ///< [sigma_x, sigma_y, tau_xy] = D_b strain [Pa], tension positive
+  Eigen::Vector3d stress;   ///< [sigma_x, sigma_y, tau_xy] = D_b (strain - plastic) [Pa], tension positive
+  Eigen::Vector3d plastic = Eigen::Vector3d::Zero();  ///< plastic strain
 };
 
 struct InterfacePointState {
   Vec2 point;
   Eigen::Vector2d delta;   ///< [delta_n, delta_s] [m]; delta_n > 0 opens
-  Eigen::Vector2d stress;  ///< [sigma_n, tau] [Pa]; sigma_n > 0 is tension
+  Eigen::Vector2d stress;  ///< [sigma_n, tau] = D_s (delta - plastic) [Pa]; sigma_n > 0 is tension
+  Eigen::Vector2d plastic = Eigen::Vector2d::Zero();  ///< plastic relative displacement [m]
 };
 
 /// Both integration points of the interface's rule.
 using InterfaceState = std::array<InterfacePointState, 2>;
 
-BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u);
-InterfaceState interface_state(const Model& model, const Interface& f, const Eigen::VectorXd& u);
+/// Plastic parts to subtract from the elastic strains, where a nonlinear analysis has them:
+/// `plastic` of the yield point at each block / interface integration point (see
+/// YieldPointIndex), or none.
+struct PlasticParts {
+  const YieldPointIndex* index = nullptr;
+  const std::vector<PlasticState>* states = nullptr;
+};
+
+BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u,
+                       const PlasticParts& plastic = {});
+InterfaceState interface_state(const Model& model, int interface, const Eigen::VectorXd& u,
+                               const PlasticParts& plastic = {});
 
 /// Displacement u = Q(p) d of a block at point p (eq. 1).
 Vec2 displacement_at(const Model& model, int block, const Vec2& p, const Eigen::VectorXd& u);

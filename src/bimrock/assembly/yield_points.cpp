@@ -7,8 +7,12 @@
 
 namespace bimrock {
 
-std::vector<YieldPoint> make_yield_points(const Model& model) {
+std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* index) {
   std::vector<YieldPoint> points;
+  if (index) {
+    index->interface_points.assign(model.interfaces.size(), {-1, -1});
+    index->block_points.assign(model.blocks.size(), -1);
+  }
   const double t = model.settings.thickness;
   // Merge key: the two blocks and the point, snapped to the model tolerance.
   std::map<std::tuple<int, int, long long, long long>, std::size_t> seen;
@@ -16,15 +20,19 @@ std::vector<YieldPoint> make_yield_points(const Model& model) {
   for (int k = 0; k < model.n_interfaces(); ++k) {
     const Interface& f = model.interfaces[k];
     if (f.joint_material < 0 || !model.joint_materials[f.joint_material].strength) continue;
-    for (const IntegrationPoint& ip : integration_points(f.segment, f.integration)) {
+    const auto ips = integration_points(f.segment, f.integration);
+    for (std::size_t end = 0; end < ips.size(); ++end) {
+      const IntegrationPoint& ip = ips[end];
       const auto key = std::make_tuple(f.block_i, f.block_j, std::llround(ip.point.x() / snap),
                                        std::llround(ip.point.y() / snap));
       auto it = seen.find(key);
       if (it != seen.end() && f.integration == Integration::lobatto) {
         points[it->second].weight += t * ip.weight;
+        if (index) index->interface_points[k][end] = static_cast<int>(it->second);
         continue;
       }
       seen[key] = points.size();
+      if (index) index->interface_points[k][end] = static_cast<int>(points.size());
       points.push_back({YieldPoint::Kind::interface, k, f.block_i, f.block_j, ip.point, f.normal,
                         t * ip.weight, f.joint_material});
     }
@@ -32,6 +40,7 @@ std::vector<YieldPoint> make_yield_points(const Model& model) {
   for (int b = 0; b < model.n_blocks(); ++b) {
     const Block& block = model.blocks[b];
     if (!model.block_materials[block.material].strength) continue;
+    if (index) index->block_points[b] = static_cast<int>(points.size());
     points.push_back({YieldPoint::Kind::block, b, b, kGround, block.centroid, Vec2::Zero(),
                       t * block.area, block.material});
   }

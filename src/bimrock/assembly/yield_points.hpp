@@ -3,6 +3,7 @@
 /// whose joint has a strength law (end points for lobatto joints, so that blocks pivot about
 /// their corners and topple exactly), and every block with a strength law (on its mean stress).
 /// The shared end points of neighbouring pieces of one subdivided joint are merged.
+#include <array>
 #include <vector>
 
 #include <bimrock/model/model.hpp>
@@ -23,7 +24,14 @@ struct YieldPoint {
   [[nodiscard]] bool is_interface() const { return kind == Kind::interface; }
 };
 
-std::vector<YieldPoint> make_yield_points(const Model& model);
+/// Which yield point stands at each interface integration point and each block (-1: none).
+struct YieldPointIndex {
+  std::vector<std::array<int, 2>> interface_points;  ///< per interface, per integration point
+  std::vector<int> block_points;                      ///< per block
+};
+
+/// @param index if given, filled with where each point stands
+std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* index = nullptr);
 
 /// The number of yield modes (LCP rows) of a yield point: 3 for a joint (slip +, slip -,
 /// opening), the number of planes of the block's linearized criterion for a block.
