@@ -1,10 +1,653 @@
+// The case-file reader: one small function per section, each knowing its keys (from the one
+// table kKeys below), defaults, units and syntax checks. Everything that needs the whole model
+// (convexity, overlaps, material names, positive stiffness) is left to build_model().
 #include <bimrock/io/case_reader.hpp>
 
-#include <stdexcept>
+#include <algorithm>
+#include <cmath>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+#include <bimrock/io/yaml_value.hpp>
 
 namespace bimrock {
-Case read_case_file(const std::string& path) { throw std::logic_error("not yet: " + path); }
-Case read_case_string(const std::string&, const std::string& name) {
-  throw std::logic_error("not yet: " + name);
+namespace {
+
+using yaml::Entry;
+using yaml::Map;
+using yaml::Value;
+
+constexpr int kSchemaVersion = 1;
+
+// Every key of schema 1: the reader validates each section against it and
+// tests/io/case_file_docs_test.cpp checks docs/case-file.md documents each path.
+constexpr std::array kKeys = {
+    CaseKey{"", "schema", true},
+    CaseKey{"", "title"},
+    CaseKey{"", "analysis"},
+    CaseKey{"", "materials", true},
+    CaseKey{"", "joint_materials"},
+    CaseKey{"", "blocks", true},
+    CaseKey{"", "joints"},
+    CaseKey{"", "supports"},
+    CaseKey{"", "loads"},
+    CaseKey{"", "monitors"},
+    CaseKey{"", "output"},
+    CaseKey{"", "stages"},
+    CaseKey{"analysis", "plane"},
+    CaseKey{"analysis", "thickness"},
+    CaseKey{"analysis", "penalty_factor"},
+    CaseKey{"materials.<name>", "E", true},
+    CaseKey{"materials.<name>", "nu", true},
+    CaseKey{"materials.<name>", "unit_weight"},
+    CaseKey{"materials.<name>", "strength"},
+    CaseKey{"materials.<name>.strength", "criterion"},
+    CaseKey{"materials.<name>.strength", "cohesion", true},
+    CaseKey{"materials.<name>.strength", "friction"},
+    CaseKey{"materials.<name>.strength", "dilation"},
+    CaseKey{"materials.<name>.strength", "planes"},
+    CaseKey{"joint_materials.<name>", "kn"},
+    CaseKey{"joint_materials.<name>", "ks"},
+    CaseKey{"joint_materials.<name>", "E"},
+    CaseKey{"joint_materials.<name>", "nu"},
+    CaseKey{"joint_materials.<name>", "h"},
+    CaseKey{"joint_materials.<name>", "continuum"},
+    CaseKey{"joint_materials.<name>", "penalty_factor"},
+    CaseKey{"joint_materials.<name>", "integration"},
+    CaseKey{"joint_materials.<name>", "subdivisions"},
+    CaseKey{"joint_materials.<name>", "cohesion"},
+    CaseKey{"joint_materials.<name>", "friction"},
+    CaseKey{"joint_materials.<name>", "dilation"},
+    CaseKey{"joint_materials.<name>", "tensile_strength"},
+    CaseKey{"joint_materials.<name>", "residual_cohesion"},
+    CaseKey{"joint_materials.<name>", "residual_friction"},
+    CaseKey{"joint_materials.<name>", "residual_tensile_strength"},
+    CaseKey{"joint_materials.<name>", "softening_slip"},
+    CaseKey{"joint_materials.<name>", "softening_opening"},
+    CaseKey{"blocks[]", "material", true},
+    CaseKey{"blocks[]", "vertices", true},
+    CaseKey{"joints", "default"},
+    CaseKey{"joints", "rules"},
+    CaseKey{"joints.rules[]", "material", true},
+    CaseKey{"joints.rules[]", "line"},
+    CaseKey{"joints.rules[]", "box"},
+    CaseKey{"joints.rules[]", "orientation"},
+    CaseKey{"joints.rules[]", "tolerance"},
+    CaseKey{"supports[]", "line"},
+    CaseKey{"supports[]", "box"},
+    CaseKey{"supports[]", "type"},
+    CaseKey{"supports[]", "joint"},
+    CaseKey{"loads", "gravity"},
+    CaseKey{"loads", "points"},
+    CaseKey{"loads", "tractions"},
+    CaseKey{"loads.points[]", "at", true},
+    CaseKey{"loads.points[]", "force", true},
+    CaseKey{"loads.tractions[]", "line"},
+    CaseKey{"loads.tractions[]", "box"},
+    CaseKey{"loads.tractions[]", "normal", true},
+    CaseKey{"loads.tractions[]", "shear"},
+    CaseKey{"monitors[]", "name", true},
+    CaseKey{"monitors[]", "at", true},
+    CaseKey{"output", "vtk"},
+    CaseKey{"output", "csv"},
+    CaseKey{"stages[]", "name", true},
+    CaseKey{"stages[]", "increments"},
+    CaseKey{"stages[]", "loads"},
+    CaseKey{"stages[]", "control"},
+    CaseKey{"stages[].control", "monitor", true},
+    CaseKey{"stages[].control", "direction", true},
+    CaseKey{"stages[].control", "displacement", true},
+};
+
+std::vector<std::string_view> keys_of(std::string_view section) {
+  std::vector<std::string_view> keys;
+  for (const CaseKey& k : kKeys) {
+    if (k.section == section)
+      keys.push_back(k.key);
+  }
+  return keys;
 }
+
+/// Throws for the first required key of `section` that `m` lacks.
+void require_keys(const Map& m, std::string_view section) {
+  for (const CaseKey& k : kKeys) {
+    if (k.section == section && k.required)
+      static_cast<void>(m.at(k.key));
+  }
+}
+
+/// The map `v` of a section: unknown and repeated keys rejected, required keys present.
+Map open(const Value& v, std::string_view section) {
+  Map m(v, keys_of(section));
+  require_keys(m, section);
+  return m;
+}
+
+// ---- Small typed values ------------------------------------------------------------------------
+
+double positive(const Value& v) {
+  const double d = v.number();
+  if (d <= 0.0)
+    v.fail("must be positive");
+  return d;
+}
+
+/// One of a fixed set of names, e.g. plane: strain | stress.
+template <class E>
+E choice(const Value& v, std::initializer_list<std::pair<std::string_view, E>> options) {
+  const std::string s = v.text();
+  std::string names;
+  for (const auto& [name, value] : options) {
+    if (s == name)
+      return value;
+    if (!names.empty())
+      names.append(", ");
+    names.append(name);
+  }
+  v.fail("unknown value '" + s + "' (allowed: " + names + ")");
+}
+
+/// A non-empty name (material, monitor).
+std::string name(const Value& v) {
+  std::string s = v.text();
+  if (s.empty())
+    v.fail("must not be empty");
+  return s;
+}
+
+/// [[x1, y1], [x2, y2]]: two points.
+std::pair<Vec2, Vec2> two_points(const Value& v, const char* what) {
+  const std::vector<Value> p = v.list();
+  if (p.size() != 2) {
+    v.fail(std::string("must be ") + what + " (two points), not a list of " +
+           std::to_string(p.size()));
+  }
+  return {p[0].point(), p[1].point()};
+}
+
+template <class Read>
+auto read_list(const Value& v, Read read) {
+  std::vector<decltype(read(v))> out;
+  for (const Value& element : v.list())
+    out.push_back(read(element));
+  return out;
+}
+
+// ---- Selectors ----------------------------------------------------------------------------------
+
+/// Where a rule, support or traction applies: exactly one of line / box / orientation (the
+/// section's key table says which of them it accepts).
+/// @param kinds the accepted keys as a phrase for the message, e.g. "line or box".
+Selector read_selector(const Map& m, const char* kinds) {
+  const std::optional<Value> line = m.find("line");
+  const std::optional<Value> box = m.find("box");
+  const std::optional<Value> orientation = m.find("orientation");
+  const int given = int(line.has_value()) + int(box.has_value()) + int(orientation.has_value());
+  if (given == 0)
+    m.self().fail(std::string("say where it applies: give one of ") + kinds);
+  if (given > 1)
+    m.self().fail(std::string("give only one of ") + kinds);
+
+  Selector s;
+  if (line) {
+    const auto [a, b] = two_points(*line, "a segment [[x1, y1], [x2, y2]]");
+    s.kind = Selector::Kind::line;
+    s.line = {a, b};
+    s.source = line->ref();
+  } else if (box) {
+    const auto [lo, hi] = two_points(*box, "a box [[xmin, ymin], [xmax, ymax]]");
+    if (lo.x() > hi.x() || lo.y() > hi.y())
+      box->fail("the first corner must be the lower-left one: [[xmin, ymin], [xmax, ymax]]");
+    s.kind = Selector::Kind::box;
+    s.box = BBox{lo, hi};
+    s.source = box->ref();
+  } else {
+    s.kind = Selector::Kind::orientation;
+    s.angle_deg = orientation->number();
+    s.source = orientation->ref();
+  }
+  if (const std::optional<Value> tol = m.find("tolerance")) {
+    if (!orientation)
+      tol->fail("applies only to an orientation selector");
+    s.angle_tolerance_deg = tol->number();
+    if (s.angle_tolerance_deg < 0.0)
+      tol->fail("must be >= 0 (degrees)");
+  }
+  return s;
+}
+
+// ---- Sections -----------------------------------------------------------------------------------
+
+/// `schema: 1` must come first, so that a file that is not a case file (or a later schema) is
+/// recognised before anything else is said about it.
+void check_schema(const Value& root) {
+  const std::vector<Entry> entries = root.entries();
+  if (entries.empty())
+    root.fail("the case file is empty: it must start with 'schema: 1'");
+  const Entry& first = entries.front();
+  if (first.key != "schema") {
+    for (const Entry& e : entries) {
+      if (e.key == "schema")
+        e.value.fail("must be the first key of the file");
+    }
+    throw InputError(std::string(root.file()), first.value.line(), "schema",
+                     "missing: a case file starts with 'schema: 1' (found '" + first.key + "')");
+  }
+  const int version = first.value.integer();
+  if (version != kSchemaVersion) {
+    first.value.fail("unsupported version " + std::to_string(version) +
+                     ": this bimrock reads schema " + std::to_string(kSchemaVersion));
+  }
+}
+
+AnalysisSettings read_analysis(const Value& v) {
+  const Map m = open(v, "analysis");
+  AnalysisSettings s;
+  if (const auto plane = m.find("plane"))
+    s.plane =
+        choice<PlaneMode>(*plane, {{"strain", PlaneMode::strain}, {"stress", PlaneMode::stress}});
+  if (const auto t = m.find("thickness"))
+    s.thickness = positive(*t);
+  if (const auto p = m.find("penalty_factor"))
+    s.penalty_factor = positive(*p);
+  return s;
+}
+
+/// A map name -> item (materials, joint_materials); names must not be empty.
+template <class Read>
+auto read_named(const Value& v, Read read) {
+  std::vector<decltype(read(v.entries().front()))> out;
+  for (const Entry& e : v.entries()) {
+    if (e.key.empty())
+      e.value.fail("a name must not be empty");
+    out.push_back(read(e));
+  }
+  return out;
+}
+
+/// An angle in degrees, 0 <= angle < 90.
+double angle_deg(const Value& v) {
+  const double a = v.number();
+  if (a < 0.0 || a >= 90.0)
+    v.fail("must be an angle in degrees, 0 <= angle < 90");
+  return a;
+}
+
+double non_negative(const Value& v) {
+  const double d = v.number();
+  if (d < 0.0)
+    v.fail("must be >= 0");
+  return d;
+}
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+/// Mohr-Coulomb or Tresca on the block's mean stress: cohesion [Pa], friction and dilation
+/// [deg], planes of the linearized criterion (DESIGN.md section 3).
+BlockStrength read_block_strength(const Value& v) {
+  const Map m = open(v, "materials.<name>.strength");
+  BlockStrength s;
+  if (const auto c = m.find("criterion"))
+    s.criterion = choice<BlockStrength::Criterion>(
+        *c, {{"mohr_coulomb", BlockStrength::Criterion::mohr_coulomb},
+             {"tresca", BlockStrength::Criterion::tresca}});
+  s.cohesion = non_negative(m.at("cohesion"));
+  const auto friction = m.find("friction");
+  const auto dilation = m.find("dilation");
+  if (s.criterion == BlockStrength::Criterion::tresca && (friction || dilation))
+    (friction ? *friction : *dilation).fail("Tresca has no friction or dilation angle");
+  if (friction)
+    s.friction = std::sin(angle_deg(*friction) * kDegree);
+  s.dilation = dilation ? std::sin(angle_deg(*dilation) * kDegree) : s.friction;
+  if (const auto planes = m.find("planes")) {
+    s.planes = planes->integer();
+    if (s.planes < 4)
+      planes->fail("must be at least 4");
+  }
+  return s;
+}
+
+/// A strength parameter with optional linear softening to `residual` over `distance`.
+Softening softening(const Map& m, const char* peak_key, const char* residual_key,
+                    const char* distance_key, double scale, bool angle) {
+  const auto read = [&](const Value& v) {
+    return angle ? std::tan(angle_deg(v) * kDegree) : non_negative(v) * scale;
+  };
+  const auto peak = m.find(peak_key);
+  Softening s = Softening::constant(peak ? read(*peak) : 0.0);
+  if (const auto residual = m.find(residual_key)) {
+    s.residual = read(*residual);
+    const auto distance = m.find(distance_key);
+    if (!distance)
+      residual->fail(std::string("needs ") + distance_key + " (how far it takes to soften)");
+    s.distance = non_negative(*distance);
+  }
+  return s;
+}
+
+/// Mohr-Coulomb with tension cut-off of a joint (DESIGN.md section 3): cohesion [Pa], friction
+/// and dilation [deg], tensile strength [Pa], with optional linear softening.
+std::optional<JointStrength> read_joint_strength(const Map& m) {
+  const bool any = m.has("cohesion") || m.has("friction") || m.has("tensile_strength") ||
+                   m.has("dilation") || m.has("residual_cohesion") ||
+                   m.has("residual_friction") || m.has("residual_tensile_strength");
+  if (!any) {
+    for (const char* k : {"softening_slip", "softening_opening"})
+      if (const auto v = m.find(k))
+        v->fail("applies only to a joint with a strength (cohesion, friction, tensile_strength)");
+    return std::nullopt;
+  }
+  JointStrength j;
+  j.cohesion = softening(m, "cohesion", "residual_cohesion", "softening_slip", 1.0, false);
+  j.friction = softening(m, "friction", "residual_friction", "softening_slip", 1.0, true);
+  j.tensile =
+      softening(m, "tensile_strength", "residual_tensile_strength", "softening_opening", 1.0, false);
+  if (const auto d = m.find("dilation"))
+    j.dilation = std::tan(angle_deg(*d) * kDegree);
+  return j;
+}
+
+/// E [Pa], nu [-], unit_weight [N/m^3] (default 0). Ranges are build_model's to check.
+BlockMaterial read_block_material(const Entry& e) {
+  const Map m = open(e.value, "materials.<name>");
+  BlockMaterial b;
+  b.name = e.key;
+  b.young = m.at("E").number();
+  b.poisson = m.at("nu").number();
+  b.unit_weight = m.number_or("unit_weight", 0.0);
+  b.source = e.value.ref();
+  if (const auto strength = m.find("strength"))
+    b.strength = read_block_strength(*strength);
+  return b;
+}
+
+/// Three alternative forms: springs kn, ks [Pa/m]; a layer E [Pa], nu, h [m] turned into
+/// springs by eq. 7 in the analysis' plane mode; or a continuum interface by penalty (eq. 15).
+JointMaterial read_joint_material(const Entry& e, const AnalysisSettings& settings) {
+  const Map m = open(e.value, "joint_materials.<name>");
+  JointMaterial j;
+  j.name = e.key;
+  j.source = e.value.ref();
+
+  const bool springs = m.has("kn") || m.has("ks");
+  const bool layer = m.has("E") || m.has("nu") || m.has("h");
+  const std::optional<Value> continuum_key = m.find("continuum");
+  const bool continuum = continuum_key && continuum_key->boolean();
+  const int forms = int(springs) + int(layer) + int(continuum);
+  if (forms != 1) {
+    e.value.fail(std::string(forms == 0 ? "say what it is: " : "mixes forms: ") +
+                 "give kn and ks (springs), or E, nu and h (a layer), or continuum: true");
+  }
+  if (!continuum) {
+    if (const auto p = m.find("penalty_factor"))
+      p->fail("applies only to continuum: true");
+  }
+
+  if (springs) {
+    j.normal_stiffness = m.at("kn").number();
+    j.shear_stiffness = m.at("ks").number();
+  } else if (layer) {
+    // Checked here, not in build_model: the springs derived from a bad layer would hide the cause.
+    const double young = positive(m.at("E"));
+    const Value nu = m.at("nu");
+    const double poisson = nu.number();
+    if (poisson <= -1.0 || poisson >= 0.5)
+      nu.fail("must lie in (-1, 0.5)");
+    const double h = positive(m.at("h"));
+    const SpringPair k = layer_stiffness(young, poisson, h, settings.plane);
+    j.normal_stiffness = k.normal;
+    j.shear_stiffness = k.shear;
+  } else {
+    j.kind = JointMaterial::Kind::continuum;
+    const auto p = m.find("penalty_factor");
+    j.penalty_factor = p ? positive(*p) : settings.penalty_factor;
+  }
+
+  // End-point springs let blocks topple (DESIGN.md section 3); a continuum never opens, so it
+  // takes the exact elastic stiffness of 2-point Gauss.
+  j.integration = continuum ? Integration::gauss : Integration::lobatto;
+  if (const auto rule = m.find("integration")) {
+    j.integration = choice<Integration>(
+        *rule, {{"lobatto", Integration::lobatto}, {"gauss", Integration::gauss}});
+  }
+  if (const auto n = m.find("subdivisions")) {
+    j.subdivisions = n->integer();
+    if (j.subdivisions < 1)
+      n->fail("must be at least 1");
+  }
+  j.strength = read_joint_strength(m);
+  if (continuum && j.strength)
+    e.value.fail("a continuum interface has no strength: give kn and ks (or E, nu, h) instead");
+  return j;
+}
+
+/// material, vertices [[x, y], ...] [m] counter-clockwise. The shape is build_model's to check.
+BlockSpec read_block(const Value& v) {
+  const Map m = open(v, "blocks[]");
+  BlockSpec b;
+  b.material = name(m.at("material"));
+  for (const Value& p : m.at("vertices").list())
+    b.polygon.vertices.push_back(p.point());
+  b.source = v.ref();
+  return b;
+}
+
+JointRule read_joint_rule(const Value& v) {
+  const Map m = open(v, "joints.rules[]");
+  JointRule r;
+  r.material = name(m.at("material"));
+  r.where = read_selector(m, "line, box or orientation");
+  r.source = v.ref();
+  return r;
+}
+
+/// joints: {default, rules}: the default material, then rules in order (later rules win).
+void read_joints(const Value& v, CaseSpec& spec) {
+  const Map m = open(v, "joints");
+  if (const auto d = m.find("default"))
+    spec.default_joint = name(*d);
+  if (const auto rules = m.find("rules"))
+    spec.joint_rules = read_list(*rules, read_joint_rule);
+}
+
+SupportSpec read_support(const Value& v) {
+  const Map m = open(v, "supports[]");
+  SupportSpec s;
+  s.where = read_selector(m, "line or box");
+  if (const auto type = m.find("type"))
+    s.kind = choice<SupportKind>(*type,
+                                 {{"fixed", SupportKind::fixed}, {"roller", SupportKind::roller}});
+  if (const auto joint = m.find("joint"))
+    s.joint_material = name(*joint);
+  s.source = v.ref();
+  return s;
+}
+
+/// at [m], force [N] (over the thickness t).
+PointLoadSpec read_point_load(const Value& v) {
+  const Map m = open(v, "loads.points[]");
+  return {m.at("at").point(), m.at("force").point(), v.ref()};
+}
+
+/// normal, shear [Pa]: tension positive along the outward normal, shear along s = (-n_y, n_x).
+TractionSpec read_traction(const Value& v) {
+  const Map m = open(v, "loads.tractions[]");
+  TractionSpec t;
+  t.where = read_selector(m, "line or box");
+  t.normal = m.at("normal").number();
+  t.shear = m.number_or("shear", 0.0);
+  t.source = v.ref();
+  return t;
+}
+
+LoadsSpec read_loads(const Value& v) {
+  const Map m = open(v, "loads");
+  LoadsSpec loads;
+  if (const auto g = m.find("gravity"))
+    loads.gravity = g->point();
+  if (const auto p = m.find("points"))
+    loads.points = read_list(*p, read_point_load);
+  if (const auto t = m.find("tractions"))
+    loads.tractions = read_list(*t, read_traction);
+  return loads;
+}
+
+std::vector<MonitorSpec> read_monitors(const Value& v) {
+  std::vector<MonitorSpec> monitors;
+  for (const Value& element : v.list()) {
+    const Map m = open(element, "monitors[]");
+    const Value n = m.at("name");
+    MonitorSpec monitor{name(n), m.at("at").point(), element.ref()};
+    // Monitors are looked up by name (results columns, displacement control): names are unique.
+    for (const MonitorSpec& other : monitors) {
+      if (other.name == monitor.name) {
+        n.fail("monitor name '" + monitor.name + "' already used by " + other.source.item +
+               " (line " + std::to_string(other.source.line) + ")");
+      }
+    }
+    monitors.push_back(std::move(monitor));
+  }
+  return monitors;
+}
+
+/// A load stage: its loads are added to the earlier stages' in `increments` steps, under load
+/// control or with a monitor's displacement prescribed (control).
+StageSpec read_stage(const Value& v) {
+  const Map m = open(v, "stages[]");
+  StageSpec st;
+  st.name = name(m.at("name"));
+  st.source = v.ref();
+  if (const auto n = m.find("increments")) {
+    st.increments = n->integer();
+    if (st.increments < 1)
+      n->fail("must be at least 1");
+  }
+  if (const auto loads = m.find("loads"))
+    st.loads = read_loads(*loads);
+  if (const auto control = m.find("control")) {
+    const Map c = open(*control, "stages[].control");
+    DisplacementControlSpec d;
+    d.monitor = name(c.at("monitor"));
+    d.direction = c.at("direction").point();
+    if (d.direction.norm() == 0.0)
+      c.at("direction").fail("must not be the zero vector");
+    d.displacement = c.at("displacement").number();
+    if (d.displacement == 0.0)
+      c.at("displacement").fail("must not be zero");
+    d.source = control->ref();
+    st.control = d;
+  }
+  return st;
+}
+
+OutputOptions read_output(const Value& v) {
+  const Map m = open(v, "output");
+  OutputOptions o;
+  o.vtk = m.boolean_or("vtk", o.vtk);
+  o.csv = m.boolean_or("csv", o.csv);
+  return o;
+}
+
+/// The whole document. Sections are read in dependency order (analysis before the joint
+/// materials that need its plane mode); missing required sections are reported last, so that an
+/// error inside a section that is there (with its line) comes first.
+Case read_document(const YAML::Node& doc, const std::string& file) {
+  if (!doc.IsMap()) {
+    throw InputError(file, doc.Mark().is_null() ? 0 : doc.Mark().line + 1, "",
+                     "a case file is a map of sections (schema, materials, blocks, ...)");
+  }
+  const Value root(doc, file, 0, "");
+  check_schema(root);
+  const Map m(root, keys_of(""));
+
+  Case c;
+  CaseSpec& s = c.spec;
+  s.file = file;
+  s.title = m.text_or("title", "");
+  if (const auto v = m.find("analysis"))
+    s.settings = read_analysis(*v);
+  if (const auto v = m.find("materials")) {
+    s.block_materials = read_named(*v, read_block_material);
+    if (s.block_materials.empty())
+      v->fail("give at least one material");
+  }
+  if (const auto v = m.find("joint_materials")) {
+    s.joint_materials =
+        read_named(*v, [&](const Entry& e) { return read_joint_material(e, s.settings); });
+  }
+  if (const auto v = m.find("blocks")) {
+    s.blocks = read_list(*v, read_block);
+    if (s.blocks.empty())
+      v->fail("give at least one block");
+  }
+  if (const auto v = m.find("joints"))
+    read_joints(*v, s);
+  if (const auto v = m.find("supports"))
+    s.supports = read_list(*v, read_support);
+  if (const auto v = m.find("loads"))
+    s.loads = read_loads(*v);
+  if (const auto v = m.find("monitors"))
+    s.monitors = read_monitors(*v);
+  if (const auto v = m.find("output"))
+    c.output = read_output(*v);
+  if (const auto v = m.find("stages")) {
+    if (const auto loads = m.find("loads"))
+      loads->fail("give loads either here (an elastic analysis) or in stages, not both");
+    s.stages = read_list(*v, read_stage);
+    if (s.stages.empty())
+      v->fail("give at least one stage");
+  }
+  require_keys(m, "");
+  return c;
+}
+
+/// Parses the text; a syntax error becomes an InputError at the line yaml-cpp reports.
+YAML::Node parse(const std::string& text, const std::string& file) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(file, e.mark.is_null() ? 0 : e.mark.line + 1, "", "malformed YAML: " + e.msg);
+  }
+  if (documents.empty() || documents.front().IsNull())
+    throw InputError(file, 0, "", "the case file is empty: it must start with 'schema: 1'");
+  if (documents.size() > 1) {
+    const YAML::Mark mark = documents[1].Mark();
+    throw InputError(file, mark.is_null() ? 0 : mark.line + 1, "",
+                     "more than one YAML document ('---'): give one case per file");
+  }
+  return documents.front();
+}
+
+}  // namespace
+
+std::span<const CaseKey> case_file_keys() {
+  return kKeys;
+}
+
+Case read_case_string(const std::string& text, const std::string& name) {
+  return read_document(parse(text, name), name);
+}
+
+Case read_case_file(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw InputError(path, 0, "", "cannot open the case file: no such file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, 0, "", "cannot open the case file: it is a folder");
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw InputError(path, 0, "", "cannot open the case file (is it readable?)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad())
+    throw InputError(path, 0, "", "cannot read the case file");
+  return read_case_string(text.str(), path);
+}
+
 }  // namespace bimrock
