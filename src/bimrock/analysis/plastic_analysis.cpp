@@ -1,0 +1,308 @@
+#include <bimrock/analysis/plastic_analysis.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include <bimrock/analysis/field_results.hpp>
+#include <bimrock/analysis/support_check.hpp>
+#include <bimrock/assembly/kinematics.hpp>
+#include <bimrock/solve/lemke.hpp>
+#include <bimrock/solve/sparse_cholesky.hpp>
+
+namespace bimrock {
+namespace {
+
+// What one stage needs besides the state: the factor of K and the stage's reference load.
+struct StageContext {
+  const Model& model;
+  const std::vector<YieldPoint>& points;
+  const SparseCholesky& k;
+  const Stage& stage;
+  Eigen::VectorXd x_ref;    // K^-1 P_stage: displacement of the whole stage load, elastic
+  Eigen::VectorXd control;  // displacement control: u_monitor . direction = control . U
+  double control_rate = 0.0;  // control . x_ref
+};
+
+struct Trial {
+  enum class Status { carried, collapse, failed };
+  Status status = Status::failed;
+  AnalysisState next;
+  std::vector<YieldRow> rows;
+  Eigen::VectorXd lambda;  // increments of the multipliers (opening: of the gap)
+  Eigen::VectorXd du;
+  Eigen::VectorXd ray;     // collapse: Lemke's secondary ray, the mechanism's multipliers
+  int lcp_size = 0;
+  int pivots = 0;
+  int rounds = 0;
+};
+
+Eigen::VectorXd local_of(const Model& model, const YieldPoint& p, const Eigen::VectorXd& du) {
+  return local_stiffness(model, p) * local_strain(model, p, du);
+}
+
+// The largest violation of any yield function (unscaled, in Pa) and the points that violate
+// them by more than tol.
+double check_all_yield_functions(const StageContext& ctx, const AnalysisState& s, double tol,
+                                 std::vector<int>& violators) {
+  double worst = -std::numeric_limits<double>::infinity();
+  for (std::size_t p = 0; p < ctx.points.size(); ++p) {
+    const Eigen::VectorXd stress = local_stress(ctx.model, ctx.points[p], s.points[p], s.u);
+    const double f = linearize(ctx.model, ctx.points[p], s.points[p], stress).f.maxCoeff();
+    worst = std::max(worst, f);
+    if (f > tol) violators.push_back(static_cast<int>(p));
+  }
+  return worst;
+}
+
+void update_state(const YieldSystem& sys, const Eigen::VectorXd& lambda, const Eigen::VectorXd& z,
+                  const std::vector<YieldPoint>& points, AnalysisState& s) {
+  for (int r = 0; r < sys.size(); ++r) {
+    const YieldRow& row = sys.rows[r];
+    PlasticState& ps = s.points[row.point];
+    if (points[row.point].is_interface() && row.mode == kOpeningMode) {
+      ps.plastic(0) += lambda(r);
+      ps.gap = z(r);
+      ps.max_gap = std::max(ps.max_gap, ps.gap);
+    } else {
+      ps.plastic += sys.flow[r] * lambda(r);
+      ps.slip += lambda(r);
+    }
+  }
+}
+
+// One increment from state s: `step` is the increment of the stage factor (load control) or of
+// the prescribed displacement (displacement control).
+Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step,
+                    const PlasticOptions& opt, Lemke& lemke) {
+  const Model& model = ctx.model;
+  const bool control = ctx.stage.control.has_value();
+  Trial t;
+  // predict_elastic: the increment if nothing yielded.
+  const Eigen::VectorXd du_elastic =
+      control ? Eigen::VectorXd((step / ctx.control_rate) * ctx.x_ref) : Eigen::VectorXd(step * ctx.x_ref);
+  // select_candidate_rows: open points, and points whose elastic predictor reaches yield.
+  std::vector<char> candidate(ctx.points.size(), 0);
+  double scale = 0.0;
+  std::vector<int> rows_of;
+  for (std::size_t p = 0; p < ctx.points.size(); ++p) {
+    const YieldPoint& point = ctx.points[p];
+    const Eigen::VectorXd stress = local_stress(model, point, s.points[p], s.u);
+    const LocalYield y = linearize(model, point, s.points[p], stress);
+    const Eigen::VectorXd predicted = y.f + y.a * local_of(model, point, du_elastic);
+    scale = std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
+    if (s.points[p].gap > 0.0 || predicted.maxCoeff() > 0.0) candidate[p] = 1;
+  }
+  for (std::size_t p = 0; p < ctx.points.size(); ++p) {
+    const Eigen::VectorXd stress = local_stress(model, ctx.points[p], s.points[p], s.u + du_elastic);
+    scale = std::max(scale, stress.cwiseAbs().maxCoeff());
+  }
+  const double tol = opt.yield_tolerance * std::max(scale, 1.0);
+
+  for (t.rounds = 1; t.rounds <= opt.max_rounds; ++t.rounds) {
+    std::vector<int> candidates;
+    for (std::size_t p = 0; p < candidate.size(); ++p)
+      if (candidate[p]) candidates.push_back(static_cast<int>(p));
+    const YieldSystem sys = assemble_yield_system(model, ctx.points, s.points, s.u, candidates);
+    const int m = sys.size();
+    t.lcp_size = m;
+    // solve_lcp: nu = -f0 - C dU + N lambda with dU = dfactor x_ref + K^-1 Phi lambda.
+    const Eigen::MatrixXd y = m > 0 ? ctx.k.solve(Eigen::MatrixXd(sys.phi)) : Eigen::MatrixXd(model.n_dofs(), 0);
+    const Eigen::VectorXd cx = sys.c * ctx.x_ref;
+    Eigen::MatrixXd lcp_m = sys.n - sys.c * y;
+    Eigen::VectorXd lcp_q;
+    Eigen::VectorXd h;
+    if (control) {
+      // dfactor = (step - h . lambda) / rate keeps the monitor on its prescribed path.
+      h = y.transpose() * ctx.control;
+      lcp_m += cx * h.transpose() / ctx.control_rate;
+      lcp_q = -sys.f0 - cx * (step / ctx.control_rate);
+    } else {
+      lcp_q = -sys.f0 - cx * step;
+    }
+    // The opening multiplier is the total gap z = gap_old + lambda (it may close again).
+    Eigen::VectorXd gap_old = Eigen::VectorXd::Zero(m);
+    for (int r = 0; r < m; ++r)
+      if (ctx.points[sys.rows[r].point].is_interface() && sys.rows[r].mode == kOpeningMode)
+        gap_old(r) = s.points[sys.rows[r].point].gap;
+    Eigen::VectorXd z = Eigen::VectorXd::Zero(m);
+    if (m > 0) {
+      const LcpResult r = lemke.solve({lcp_m, lcp_q - lcp_m * gap_old});
+      t.pivots += r.steps;
+      if (r.status == LcpStatus::no_solution) {
+        t.status = Trial::Status::collapse;
+        t.rows = sys.rows;
+        if (r.ray.size() == m) {
+          t.ray = r.ray;
+          t.du = y * r.ray;
+        }
+        return t;
+      }
+      if (r.status != LcpStatus::solved) {
+        if (std::getenv("BIMROCK_DEBUG_LCP"))
+          std::fprintf(stderr, "LCP m=%d step=%g: %s, worst residual %g\n", m, step,
+                       to_string(r.status), r.residuals.worst_relative());
+        if (std::getenv("BIMROCK_DEBUG_LCP_DUMP")) {
+          std::ofstream dump(std::getenv("BIMROCK_DEBUG_LCP_DUMP"));
+          write_lcp(dump, {lcp_m, lcp_q - lcp_m * gap_old});
+        }
+        t.status = Trial::Status::failed;
+        return t;
+      }
+      z = r.z;
+    }
+    const Eigen::VectorXd lambda = z - gap_old;
+    const double dfactor = control ? (step - (m > 0 ? h.dot(lambda) : 0.0)) / ctx.control_rate : step;
+    t.du = dfactor * ctx.x_ref + y * lambda;
+    t.next = s;
+    t.next.u += t.du;
+    t.next.stage_factor += dfactor;
+    update_state(sys, lambda, z, ctx.points, t.next);
+    // check_all_yield_functions: add the violated points that were not in the LCP.
+    std::vector<int> violators;
+    check_all_yield_functions(ctx, t.next, tol, violators);
+    bool added = false;
+    for (int p : violators) {
+      if (!candidate[p]) candidate[p] = added = true;
+    }
+    if (!added) {
+      t.rows = sys.rows;
+      t.lambda = lambda;
+      t.status = Trial::Status::carried;
+      return t;
+    }
+  }
+  t.status = Trial::Status::failed;
+  return t;
+}
+
+IncrementRecord record(const Model& model, const Trial& t, int stage, int increment, double seconds) {
+  IncrementRecord r;
+  r.stage = stage;
+  r.increment = increment;
+  r.stage_factor = t.next.stage_factor;
+  for (const Monitor& m : model.monitors) r.monitors.push_back(displacement_at(model, m.block, m.point, t.next.u));
+  std::vector<char> yielded(t.next.points.size(), 0);
+  for (std::size_t k = 0; k < t.rows.size(); ++k)
+    if (std::abs(t.lambda(static_cast<Eigen::Index>(k))) > 0.0) yielded[t.rows[k].point] = 1;
+  for (std::size_t p = 0; p < yielded.size(); ++p) {
+    r.yielding_points += yielded[p];
+    r.open_points += t.next.points[p].gap > 0.0 ? 1 : 0;
+  }
+  r.lcp_size = t.lcp_size;
+  r.pivots = t.pivots;
+  r.rounds = t.rounds;
+  r.seconds = seconds;
+  return r;
+}
+
+// The mechanism: the ray of the failed step where Lemke found one, else the flow of the last
+// carried step (near collapse it is dominated by the mechanism).
+Collapse describe_collapse(int stage, double carried, double failed, const Trial* failure,
+                           const Trial* last) {
+  Collapse c{stage, carried, failed, {}, {}};
+  const Trial* source = failure && failure->ray.size() > 0 ? failure : last;
+  if (!source || source->rows.empty()) return c;
+  const Eigen::VectorXd& flow = source == failure ? failure->ray : last->lambda;
+  const double top = flow.cwiseAbs().maxCoeff();
+  for (std::size_t k = 0; k < source->rows.size(); ++k) {
+    const double l = flow(static_cast<Eigen::Index>(k));
+    if (top > 0.0 && std::abs(l) > 1e-3 * top)
+      c.mechanism.push_back({source->rows[k].point, source->rows[k].mode, l / top});
+  }
+  const double norm = source->du.norm();
+  if (norm > 0.0) c.direction = source->du / norm;
+  return c;
+}
+
+}  // namespace
+
+PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt,
+                                   const IncrementCallback& on_increment) {
+  PlasticResult result;
+  {
+    ScopedTimer t(result.timings, "check supports");
+    check_supports(model);
+  }
+  SparseCholesky k;
+  {
+    ScopedTimer t(result.timings, "assemble");
+    const SparseMatrix lower = assemble_stiffness_lower(model);
+    ScopedTimer f(result.timings, "factorize");
+    k.analyze(lower, 6);
+    if (!k.factorize(lower)) report_singular_stiffness(model, k.failed_column());
+  }
+  result.points = make_yield_points(model);
+  result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
+  result.state.points.assign(result.points.size(), PlasticState{});
+  Lemke lemke;
+  for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
+    const Stage& stage = model.stages[st];
+    StageContext ctx{model, result.points, k, stage, {}, {}, 0.0};
+    ctx.x_ref = k.solve(assemble_loads(model, stage.loads));
+    double step = 1.0 / stage.increments;
+    if (stage.control) {
+      const Monitor& m = model.monitors[stage.control->monitor];
+      ctx.control = Eigen::VectorXd::Zero(model.n_dofs());
+      ctx.control.segment<6>(6 * m.block) =
+          block_Q(model.blocks[m.block].centroid, m.point).transpose() * stage.control->direction;
+      ctx.control_rate = ctx.control.dot(ctx.x_ref);
+      if (!(std::abs(ctx.control_rate) > 0.0))
+        throw ModelError("stage '" + stage.name + "': the controlled monitor '" + m.name +
+                             "' does not move under the stage's loads",
+                         {m.block});
+      step = stage.control->displacement / stage.increments;
+    }
+    result.state.stage_factor = 0.0;
+    std::optional<Trial> last;
+    int increment = 0;
+    for (int n = 0; n < stage.increments; ++n) {
+      const auto start = std::chrono::steady_clock::now();
+      Trial t = try_increment(ctx, result.state, step, opt, lemke);
+      auto finish = [&](const Trial& carried) {
+        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        result.state = carried.next;
+        result.history.push_back(record(model, carried, st, ++increment, secs));
+        if (on_increment) on_increment(result.history.back(), result.state);
+        last = carried;
+      };
+      if (t.status == Trial::Status::carried) {
+        finish(t);
+        continue;
+      }
+      // Bisect the failed step: carry what can be carried, bracket the collapse load. The
+      // bracket's upper end is the nearest step proven to fail (a ray); steps that fail only
+      // numerically, close to the collapse where the LCP is nearly singular, are cut again
+      // but prove nothing (DESIGN.md section 3).
+      double carried = result.state.stage_factor;
+      double failing_step = step;
+      std::optional<double> proven;  // stage factor of the nearest ray
+      Trial failure = t;
+      if (t.status == Trial::Status::collapse) proven = carried + step;
+      for (int b = 0; b < opt.max_bisections; ++b) {
+        const double upper = proven ? *proven : carried + failing_step;
+        if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper)) break;
+        const Trial half = try_increment(ctx, result.state, 0.5 * failing_step, opt, lemke);
+        if (half.status == Trial::Status::carried) {
+          finish(half);
+          carried = result.state.stage_factor;
+        } else if (half.status == Trial::Status::collapse) {
+          proven = carried + 0.5 * failing_step;
+          failure = half;
+        }
+        failing_step *= 0.5;
+      }
+      if (!proven)
+        throw std::runtime_error("stage '" + stage.name + "': the LCP of the increment at stage factor " +
+                                 std::to_string(carried) + " could not be solved accurately");
+      result.collapse = describe_collapse(st, carried, *proven, &failure,
+                                          last ? &*last : nullptr);
+      return result;
+    }
+  }
+  return result;
+}
+
+}  // namespace bimrock
