@@ -34,6 +34,8 @@ struct Trial {
   Eigen::VectorXd lambda;  // increments of the multipliers (opening: of the gap)
   Eigen::VectorXd du;
   Eigen::VectorXd ray;     // collapse: Lemke's secondary ray, the mechanism's multipliers
+  double kink = 1.0;       // < 1: the fraction of the step at which a softening law reached
+                           // its residual value (the step must stop there)
   int lcp_size = 0;
   int pivots = 0;
   int rounds = 0;
@@ -55,6 +57,28 @@ double check_all_yield_functions(const StageContext& ctx, const AnalysisState& s
     if (f > tol) violators.push_back(static_cast<int>(p));
   }
   return worst;
+}
+
+// The fraction of the step at which the first softening law of a joint reaches its residual
+// value (its slope changes there, so a linear step must not run past it), or 1.
+double first_kink(const Model& model, const std::vector<YieldPoint>& points,
+                  const AnalysisState& before, const AnalysisState& after) {
+  double fraction = 1.0;
+  auto crossing = [&](double old_kappa, double new_kappa, const Softening& law) {
+    const double d = law.distance;
+    if (!std::isfinite(d) || law.peak == law.residual) return;
+    const double margin = 1e-9 * std::max(d, 1e-300);
+    if (old_kappa < d - margin && new_kappa > d + margin)
+      fraction = std::min(fraction, (d - old_kappa) / (new_kappa - old_kappa));
+  };
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (!points[p].is_interface()) continue;
+    const JointStrength& law = *model.joint_materials[points[p].material].strength;
+    crossing(before.points[p].slip, after.points[p].slip, law.cohesion);
+    crossing(before.points[p].slip, after.points[p].slip, law.friction);
+    crossing(before.points[p].max_gap, after.points[p].max_gap, law.tensile);
+  }
+  return fraction;
 }
 
 void update_state(const YieldSystem& sys, const Eigen::VectorXd& lambda, const Eigen::VectorXd& z,
@@ -171,6 +195,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       t.rows = sys.rows;
       t.lambda = lambda;
       t.status = Trial::Status::carried;
+      t.kink = first_kink(model, ctx.points, s, t.next);
       return t;
     }
   }
@@ -261,6 +286,21 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     for (int n = 0; n < stage.increments; ++n) {
       const auto start = std::chrono::steady_clock::now();
       Trial t = try_increment(ctx, result.state, step, opt, lemke);
+      // A softening law that reaches its residual value inside the step: stop the step there
+      // and carry the rest as a further step (the laws are linear on each side of the kink).
+      double rest = step;
+      for (int cuts = 0; cuts < 100 && t.status == Trial::Status::carried && t.kink < 1.0; ++cuts) {
+        const Trial to_kink = try_increment(ctx, result.state, t.kink * rest, opt, lemke);
+        if (to_kink.status != Trial::Status::carried) break;
+        const double done = to_kink.next.stage_factor - result.state.stage_factor;
+        result.state = to_kink.next;
+        result.history.push_back(record(model, to_kink, st, ++increment,
+                                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
+        if (on_increment) on_increment(result.history.back(), result.state);
+        last = to_kink;
+        rest = stage.control ? rest * (1.0 - t.kink) : rest - done;
+        t = try_increment(ctx, result.state, rest, opt, lemke);
+      }
       auto finish = [&](const Trial& carried) {
         const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         result.state = carried.next;
