@@ -1,0 +1,146 @@
+#include <bimrock/io/block_picture.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <bimrock/assembly/kinematics.hpp>
+
+namespace bimrock {
+namespace {
+
+constexpr double kMargin = 30.0;
+constexpr double kTitle = 30.0;
+
+struct Frame {
+  BBox box;
+  double scale = 1.0;
+  double height = 0.0;
+  [[nodiscard]] double x(double wx) const { return kMargin + (wx - box.lo.x()) * scale; }
+  [[nodiscard]] double y(double wy) const { return height - kMargin - (wy - box.lo.y()) * scale; }
+};
+
+Vec2 moved(const Model& m, int block, const Vec2& p, const Eigen::VectorXd& u, double magnify) {
+  if (u.size() == 0) return p;
+  return p + magnify * (block_Q(m.blocks[block].centroid, p) * u.segment<6>(6 * block));
+}
+
+void polygon_path(cairo_t* cr, const Frame& f, const Model& m, int block, const Eigen::VectorXd& u,
+                  double magnify) {
+  const auto& v = m.blocks[block].polygon.vertices;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const Vec2 p = moved(m, block, v[k], u, magnify);
+    if (k == 0) cairo_move_to(cr, f.x(p.x()), f.y(p.y()));
+    else cairo_line_to(cr, f.x(p.x()), f.y(p.y()));
+  }
+  cairo_close_path(cr);
+}
+
+void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, double width) {
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  double magnify = 0.0;
+  if (pic.u.size() > 0) {
+    double largest = 0.0;
+    for (int b = 0; b < m.n_blocks(); ++b)
+      for (const Vec2& v : m.blocks[b].polygon.vertices)
+        largest = std::max(largest, (block_Q(m.blocks[b].centroid, v) * pic.u.segment<6>(6 * b)).norm());
+    if (largest > 0.0) magnify = pic.displayed_fraction * f.box.diagonal() / largest;
+  }
+  const Eigen::VectorXd none;
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  if (magnify > 0.0) {
+    cairo_set_source_rgb(cr, 0.75, 0.75, 0.75);
+    cairo_set_line_width(cr, 0.8);
+    for (int b = 0; b < m.n_blocks(); ++b) {
+      polygon_path(cr, f, m, b, none, 0.0);
+      cairo_stroke(cr);
+    }
+  }
+  for (int b = 0; b < m.n_blocks(); ++b) {
+    polygon_path(cr, f, m, b, pic.u, magnify);
+    cairo_set_source_rgb(cr, 0.90, 0.85, 0.76);  // rock
+    cairo_fill_preserve(cr);
+    cairo_set_source_rgb(cr, 0.35, 0.3, 0.25);
+    cairo_set_line_width(cr, 0.6);
+    cairo_stroke(cr);
+  }
+  // Supports: a dark line along the held edges.
+  for (int k = 0; k < m.n_interfaces(); ++k) {
+    const Interface& in = m.interfaces[k];
+    InterfaceMark mark = pic.marks.empty() ? InterfaceMark::joint : pic.marks[k];
+    if (in.is_support()) {
+      cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+      cairo_set_line_width(cr, 3.0);
+      cairo_move_to(cr, f.x(in.segment.a.x()), f.y(in.segment.a.y()));
+      cairo_line_to(cr, f.x(in.segment.b.x()), f.y(in.segment.b.y()));
+      cairo_stroke(cr);
+      continue;
+    }
+    if (mark == InterfaceMark::none) continue;
+    if (pic.marks.empty() && in.joint_material >= 0 &&
+        m.joint_materials[in.joint_material].kind == JointMaterial::Kind::continuum)
+      continue;
+    const Vec2 a = moved(m, in.block_i, in.segment.a, pic.u, magnify);
+    const Vec2 b = moved(m, in.block_i, in.segment.b, pic.u, magnify);
+    switch (mark) {
+      case InterfaceMark::slipping: cairo_set_source_rgb(cr, 0.85, 0.1, 0.1); cairo_set_line_width(cr, 3.0); break;
+      case InterfaceMark::opening: cairo_set_source_rgb(cr, 0.1, 0.3, 0.9); cairo_set_line_width(cr, 3.0); break;
+      default: cairo_set_source_rgb(cr, 0.2, 0.2, 0.2); cairo_set_line_width(cr, 1.2); break;
+    }
+    cairo_move_to(cr, f.x(a.x()), f.y(a.y()));
+    cairo_line_to(cr, f.x(b.x()), f.y(b.y()));
+    cairo_stroke(cr);
+  }
+  cairo_set_source_rgb(cr, 0, 0, 0);
+  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, 14);
+  cairo_move_to(cr, kMargin, kTitle - 8);
+  cairo_show_text(cr, pic.title.c_str());
+  if (!pic.marks.empty()) {
+    cairo_set_font_size(cr, 12);
+    const char* legend = "red: slipping joint   blue: opening joint   black: support";
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, legend, &e);
+    cairo_move_to(cr, width - kMargin - e.width, kTitle - 8);
+    cairo_show_text(cr, legend);
+  }
+}
+
+}  // namespace
+
+void write_block_picture(const Model& model, const BlockPicture& pic,
+                         const std::filesystem::path& stem) {
+  Frame f;
+  for (const Block& b : model.blocks) f.box.add(bbox_of(b.polygon));
+  const double grow = 0.08 * f.box.diagonal();  // room for the displaced blocks
+  f.box.lo -= Vec2(grow, grow);
+  f.box.hi += Vec2(grow, grow);
+  const Vec2 size = f.box.hi - f.box.lo;
+  const double width = pic.width_px;
+  f.scale = (width - 2 * kMargin) / size.x();
+  const double height = std::ceil(size.y() * f.scale + 2 * kMargin + kTitle);
+  f.height = height;
+  const std::filesystem::path png = stem.string() + ".png";
+  const std::filesystem::path svg = stem.string() + ".svg";
+  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, pic.width_px, int(height));
+  cairo_t* cr = cairo_create(image);
+  draw(cr, model, pic, f, width);
+  cairo_destroy(cr);
+  const cairo_status_t written = cairo_surface_write_to_png(image, png.c_str());
+  cairo_surface_destroy(image);
+  if (written != CAIRO_STATUS_SUCCESS) throw std::runtime_error("cannot write " + png.string());
+  cairo_surface_t* vector = cairo_svg_surface_create(svg.c_str(), width, height);
+  cr = cairo_create(vector);
+  draw(cr, model, pic, f, width);
+  cairo_destroy(cr);
+  cairo_surface_finish(vector);
+  const bool ok = cairo_surface_status(vector) == CAIRO_STATUS_SUCCESS;
+  cairo_surface_destroy(vector);
+  if (!ok) throw std::runtime_error("cannot write " + svg.string());
+}
+
+}  // namespace bimrock
