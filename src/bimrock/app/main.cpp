@@ -6,10 +6,11 @@
 #include <filesystem>
 #include <string>
 
-#include <CLI/CLI.hpp>
 #include <fmt/core.h>
+#include <CLI/CLI.hpp>
 
 #include <bimrock/analysis/elastic_analysis.hpp>
+#include <bimrock/analysis/plastic_analysis.hpp>
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/io/results_writer.hpp>
 
@@ -26,17 +27,33 @@ std::filesystem::path default_output(const std::string& case_file) {
 int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
   const bimrock::Case c = bimrock::read_case_file(case_file);
   const bimrock::Model model = bimrock::build_model(c.spec);
-  const bimrock::ElasticSolution solution = bimrock::solve_elastic(model);
-  if (out.empty()) out = default_output(case_file);
-  bimrock::write_elastic_results(model, solution, c.output, out);
-  if (!quiet) bimrock::print_summary(model, solution, out);
+  if (out.empty())
+    out = default_output(case_file);
+  if (model.stages.empty()) {
+    const bimrock::ElasticSolution solution = bimrock::solve_elastic(model);
+    bimrock::write_elastic_results(model, solution, c.output, out);
+    if (!quiet)
+      bimrock::print_summary(model, solution, out);
+    return kOk;
+  }
+  bimrock::PlasticResultsWriter writer(model, c.output, out);
+  const bimrock::PlasticResult result = bimrock::run_plastic_analysis(
+      model, {}, [&](const bimrock::IncrementRecord& r, const bimrock::AnalysisState& s) {
+        writer.on_increment(r, s);
+        if (!quiet)
+          bimrock::print_increment(model, r);
+      });
+  const bimrock::ElasticSolution fields = writer.finish(result);
+  if (!quiet)
+    bimrock::print_plastic_summary(model, result, fields, out);
   return kOk;
 }
 
 int check(const std::string& case_file, bool quiet) {
   const bimrock::Case c = bimrock::read_case_file(case_file);
   const bimrock::Model model = bimrock::build_model(c.spec);
-  if (!quiet) bimrock::print_model(model);
+  if (!quiet)
+    bimrock::print_model(model);
   return kOk;
 }
 
@@ -59,8 +76,10 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (*run_cmd) return run(case_file, output, quiet);
-    if (*check_cmd) return check(case_file, quiet);
+    if (*run_cmd)
+      return run(case_file, output, quiet);
+    if (*check_cmd)
+      return check(case_file, quiet);
   } catch (const bimrock::InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kInputError;

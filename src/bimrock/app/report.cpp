@@ -6,24 +6,71 @@ namespace bimrock {
 
 void print_model(const Model& model) {
   int supports = 0;
-  for (const Interface& f : model.interfaces) supports += f.is_support() ? 1 : 0;
+  for (const Interface& f : model.interfaces)
+    supports += f.is_support() ? 1 : 0;
   fmt::print("{}: {} blocks, {} interfaces between blocks, {} support interfaces, {} unknowns\n",
              model.source_file, model.n_blocks(), model.n_interfaces() - supports, supports,
              model.n_dofs());
   fmt::print("length tolerance {:.3g} m; the case is valid\n", model.tolerance);
 }
 
-void print_summary(const Model& model, const ElasticSolution& s, const std::filesystem::path& out) {
-  print_model(model);
-  fmt::print("mean strain of the mass: eps_x = {:.6e}, eps_y = {:.6e}, gamma_xy = {:.6e}\n",
-             s.mean_strain(0), s.mean_strain(1), s.mean_strain(2));
+namespace {
+
+void print_monitors(const Model& model, const ElasticSolution& s) {
   for (std::size_t k = 0; k < model.monitors.size(); ++k) {
     fmt::print("monitor {:>10}: ux = {:.6e} m, uy = {:.6e} m\n", model.monitors[k].name,
                s.monitor_displacements[k].x(), s.monitor_displacements[k].y());
   }
+}
+
+void print_timings(const Timings& t) {
   std::string phases;
-  for (const auto& [name, seconds] : s.timings.phases) phases += fmt::format(" {} {:.3f} s,", name, seconds);
-  fmt::print("time:{} total {:.3f} s\n", phases, s.timings.total());
+  for (const auto& [name, seconds] : t.phases)
+    phases += fmt::format(" {} {:.3f} s,", name, seconds);
+  fmt::print("time:{} total {:.3f} s\n", phases, t.total());
+}
+
+}  // namespace
+
+void print_summary(const Model& model, const ElasticSolution& s, const std::filesystem::path& out) {
+  print_model(model);
+  fmt::print("mean strain of the mass: eps_x = {:.6e}, eps_y = {:.6e}, gamma_xy = {:.6e}\n",
+             s.mean_strain(0), s.mean_strain(1), s.mean_strain(2));
+  print_monitors(model, s);
+  print_timings(s.timings);
+  fmt::print("results written to {}/\n", out.string());
+}
+
+void print_increment(const Model& model, const IncrementRecord& r) {
+  const Stage& stage = model.stages[static_cast<std::size_t>(r.stage)];
+  fmt::print(
+      "stage {:>12} step {:>3}: factor {:.6f}, yielding points {:>5}, open {:>5}, LCP {:>5} rows, "
+      "{:>5} pivots\n",
+      stage.name, r.increment, r.stage_factor, r.yielding_points, r.open_points, r.lcp_size,
+      r.pivots);
+}
+
+void print_plastic_summary(const Model& model, const PlasticResult& result,
+                           const ElasticSolution& fields, const std::filesystem::path& out) {
+  print_model(model);
+  print_monitors(model, fields);
+  if (result.collapse) {
+    const Collapse& c = *result.collapse;
+    const Stage& stage = model.stages[static_cast<std::size_t>(c.stage)];
+    Vec2 load = Vec2::Zero();
+    for (const PointLoad& p : stage.loads.points)
+      load += p.force;
+    fmt::print("COLLAPSE in stage '{}': carried factor {:.6f}, failed at {:.6f}", stage.name,
+               c.carried, c.failed);
+    if (load.norm() > 0.0)
+      fmt::print(" (point load between {:.6g} N and {:.6g} N)", c.carried * load.norm(),
+                 c.failed * load.norm());
+    fmt::print("; {} yield modes in the mechanism (summary.json, collapse.png)\n",
+               c.mechanism.size());
+  } else {
+    fmt::print("all {} stages carried\n", model.stages.size());
+  }
+  print_timings(result.timings);
   fmt::print("results written to {}/\n", out.string());
 }
 

@@ -16,7 +16,8 @@ struct SparseCholesky::Impl {
     common.print = 0;  // we report failures ourselves
   }
   ~Impl() {
-    if (factor) cholmod_l_free_factor(&factor, &common);
+    if (factor)
+      cholmod_l_free_factor(&factor, &common);
     cholmod_l_finish(&common);
   }
 
@@ -81,8 +82,10 @@ CholmodMatrix block_pattern(const CholmodMatrix& lower, int block_size) {
 }  // namespace
 
 void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
-  if (!lower.isCompressed()) throw std::logic_error("SparseCholesky: matrix must be compressed");
-  if (impl_->factor) cholmod_l_free_factor(&impl_->factor, &impl_->common);
+  if (!lower.isCompressed())
+    throw std::logic_error("SparseCholesky: matrix must be compressed");
+  if (impl_->factor)
+    cholmod_l_free_factor(&impl_->factor, &impl_->common);
   cholmod_sparse a = Impl::view(lower);
   cholmod_common& cm = impl_->common;
   if (block_size > 1 && lower.rows() % block_size == 0 && lower.rows() > block_size) {
@@ -91,11 +94,13 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
     const CholmodMatrix pattern = block_pattern(lower, block_size);
     cholmod_sparse p = Impl::view(pattern);
     cholmod_factor* coarse = cholmod_l_analyze(&p, &cm);
-    if (!coarse) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+    if (!coarse)
+      throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
     const auto* coarse_perm = static_cast<const std::int64_t*>(coarse->Perm);
     std::vector<std::int64_t> perm(static_cast<std::size_t>(lower.rows()));
     for (std::int64_t k = 0; k < pattern.rows(); ++k)
-      for (int d = 0; d < block_size; ++d) perm[block_size * k + d] = block_size * coarse_perm[k] + d;
+      for (int d = 0; d < block_size; ++d)
+        perm[block_size * k + d] = block_size * coarse_perm[k] + d;
     cholmod_l_free_factor(&coarse, &cm);
     const int saved_nmethods = cm.nmethods;
     const int saved_ordering = cm.method[0].ordering;
@@ -107,13 +112,15 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
   } else {
     impl_->factor = cholmod_l_analyze(&a, &cm);
   }
-  if (!impl_->factor) throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  if (!impl_->factor)
+    throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   n_ = lower.rows();
   factorized_ = false;
 }
 
 bool SparseCholesky::factorize(const CholmodMatrix& lower) {
-  if (!impl_->factor) analyze(lower);
+  if (!impl_->factor)
+    analyze(lower);
   cholmod_sparse a = Impl::view(lower);
   cholmod_l_factorize(&a, impl_->factor, &impl_->common);
   if (impl_->common.status == CHOLMOD_OUT_OF_MEMORY)
@@ -131,17 +138,21 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
 }
 
 std::int64_t SparseCholesky::factor_nonzeros() const {
-  if (!impl_->factor) return 0;
+  if (!impl_->factor)
+    return 0;
   cholmod_factor* f = impl_->factor;
-  if (f->is_super) return static_cast<std::int64_t>(f->xsize);
+  if (f->is_super)
+    return static_cast<std::int64_t>(f->xsize);
   return static_cast<std::int64_t>(f->nzmax);
 }
 
 Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {
-  if (!factorized_) throw std::logic_error("SparseCholesky::solve before a successful factorize");
+  if (!factorized_)
+    throw std::logic_error("SparseCholesky::solve before a successful factorize");
   cholmod_dense rhs = Impl::view(b);
   cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, impl_->factor, &rhs, &impl_->common);
-  if (!x) throw std::runtime_error("CHOLMOD solve failed");
+  if (!x)
+    throw std::runtime_error("CHOLMOD solve failed");
   Eigen::MatrixXd out =
       Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), b.rows(), b.cols());
   cholmod_l_free_dense(&x, &impl_->common);

@@ -1,0 +1,135 @@
+#include <bimrock/io/results_writer.hpp>
+
+#include <fmt/core.h>
+
+#include <bimrock/io/block_picture.hpp>
+#include <bimrock/io/history_writer.hpp>
+#include <bimrock/io/run_summary.hpp>
+#include <bimrock/io/state_tables.hpp>
+
+namespace bimrock {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string step_file(std::size_t step) {
+  return fmt::format("vtk/step_{:04d}.vtu", step);
+}
+
+/// The files every run writes for its final state; appends their names to `files`.
+void write_final_state(const Model& model, const ElasticSolution& fields,
+                       const OutputOptions& options, const fs::path& folder,
+                       std::vector<std::string>& files) {
+  if (options.csv) {
+    write_blocks_csv(model, fields, folder / "blocks.csv");
+    write_interfaces_csv(model, fields, folder / "interfaces.csv");
+    files.insert(files.end(), {"blocks.csv", "interfaces.csv"});
+  }
+}
+
+// The interface marks of a collapse mechanism: its slipping and opening joints.
+std::vector<InterfaceMark> mechanism_marks(const Model& model, const PlasticResult& result) {
+  std::vector<InterfaceMark> marks(static_cast<std::size_t>(model.n_interfaces()),
+                                   InterfaceMark::none);
+  for (std::size_t f = 0; f < marks.size(); ++f) {
+    if (model.interfaces[f].joint_material >= 0 && !model.interfaces[f].is_support())
+      marks[f] = InterfaceMark::joint;
+  }
+  for (const MechanismEntry& e : result.collapse->mechanism) {
+    const YieldPoint& p = result.points[static_cast<std::size_t>(e.point)];
+    if (!p.is_interface())
+      continue;
+    marks[static_cast<std::size_t>(p.owner)] =
+        e.mode == 2 ? InterfaceMark::opening : InterfaceMark::slipping;
+  }
+  return marks;
+}
+
+}  // namespace
+
+void write_elastic_results(const Model& model, const ElasticSolution& solution,
+                           const OutputOptions& options, const fs::path& out) {
+  StagingFolder folder(out);
+  std::vector<std::string> files;
+  write_final_state(model, solution, options, folder.path(), files);
+  if (options.vtk) {
+    fs::create_directory(folder.path() / "vtk");
+    write_vtu(model, solution, {}, folder.path() / step_file(1));
+    write_pvd({{1.0, step_file(1)}}, folder.path() / "results.pvd");
+    files.insert(files.end(), {step_file(1), "results.pvd"});
+  }
+  if (model.n_blocks() <= kMaxPictureBlocks) {
+    write_block_picture(model, {"displaced (magnified)", solution.u, 0.05, {}, 1000},
+                        folder.path() / "displaced");
+    files.insert(files.end(), {"displaced.png", "displaced.svg"});
+  }
+  write_json(run_summary(model, solution, nullptr, files), folder.path() / "summary.json");
+  folder.commit();
+}
+
+PlasticResultsWriter::PlasticResultsWriter(const Model& model, OutputOptions options,
+                                           const fs::path& out)
+    : model_(model), options_(options), folder_(out) {
+  const std::size_t n_points = make_yield_points(model_, &index_).size();
+  if (options_.vtk) {
+    fs::create_directory(folder_.path() / "vtk");
+    AnalysisState start;
+    start.u = Eigen::VectorXd::Zero(model_.n_dofs());
+    start.points.assign(n_points, PlasticState{});
+    write_vtu(model_, fields_of(start), {&index_, &start.points}, folder_.path() / step_file(0));
+    steps_.push_back({0.0, step_file(0)});
+  }
+}
+
+ElasticSolution PlasticResultsWriter::fields_of(const AnalysisState& state) const {
+  ElasticSolution fields;
+  fields.u = state.u;
+  evaluate_fields(model_, fields, {&index_, &state.points});
+  return fields;
+}
+
+void PlasticResultsWriter::on_increment(const IncrementRecord& /*record*/,
+                                        const AnalysisState& state) {
+  if (!options_.vtk)
+    return;
+  const std::size_t step = steps_.size();
+  write_vtu(model_, fields_of(state), {&index_, &state.points}, folder_.path() / step_file(step));
+  steps_.push_back({static_cast<double>(step), step_file(step)});
+}
+
+ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
+  const fs::path& dir = folder_.path();
+  ElasticSolution fields = fields_of(result.state);
+  fields.timings = result.timings;
+  std::vector<std::string> files;
+  write_final_state(model_, fields, options_, dir, files);
+  write_history_csv(model_, result, dir / "history.csv");
+  files.push_back("history.csv");
+  write_history_plots(model_, result, dir);
+  for (const Monitor& m : model_.monitors)
+    files.insert(files.end(), {"plot_" + m.name + ".png", "plot_" + m.name + ".svg"});
+  if (options_.vtk) {
+    write_pvd(steps_, dir / "results.pvd");
+    for (const PvdEntry& s : steps_)
+      files.push_back(s.file);
+    files.push_back("results.pvd");
+  }
+  if (model_.n_blocks() <= kMaxPictureBlocks) {
+    write_block_picture(model_, {"final state (displacements magnified)", fields.u, 0.05, {}, 1000},
+                        dir / "final");
+    files.insert(files.end(), {"final.png", "final.svg"});
+    if (result.collapse && result.collapse->direction.size() == model_.n_dofs()) {
+      write_block_picture(model_,
+                          {"collapse mechanism (red: slipping joints, blue: opening)",
+                           result.collapse->direction, 0.08, mechanism_marks(model_, result), 1000},
+                          dir / "collapse");
+      files.insert(files.end(), {"collapse.png", "collapse.svg"});
+    }
+  }
+  write_json(run_summary(model_, fields, &result, files), dir / "summary.json");
+  folder_.commit();
+  return fields;
+}
+
+}  // namespace bimrock

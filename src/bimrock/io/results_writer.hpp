@@ -1,0 +1,48 @@
+#pragma once
+/// @file The results folder of a run (DESIGN.md section 4), written all or nothing: summary.json,
+/// blocks.csv, interfaces.csv, vtk/step_NNNN.vtu + results.pvd, and for a nonlinear run
+/// history.csv, the load-displacement plots and pictures of the final state and the mechanism.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <bimrock/analysis/elastic_analysis.hpp>
+#include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/io/case_reader.hpp>
+#include <bimrock/io/output_folder.hpp>
+#include <bimrock/io/vtk_writer.hpp>
+
+namespace bimrock {
+
+/// Pictures are drawn for models up to this many blocks (beyond, a picture is a grey blur and
+/// slow to draw; ParaView is the tool then).
+inline constexpr int kMaxPictureBlocks = 20000;
+
+/// Writes the results of an elastic run into `out` (replacing earlier results there).
+void write_elastic_results(const Model& model, const ElasticSolution& solution,
+                           const OutputOptions& options, const std::filesystem::path& out);
+
+/// Writes the results of a nonlinear run as it goes: a VTK step per carried increment (pass
+/// on_increment() to run_plastic_analysis), the rest in finish(). Nothing appears in `out`
+/// before finish() returns; if the writer is destroyed unfinished, nothing appears at all.
+class PlasticResultsWriter {
+ public:
+  PlasticResultsWriter(const Model& model, OutputOptions options, const std::filesystem::path& out);
+
+  void on_increment(const IncrementRecord& record, const AnalysisState& state);
+
+  /// Writes the remaining files, moves the folder into place and returns the final fields.
+  ElasticSolution finish(const PlasticResult& result);
+
+ private:
+  [[nodiscard]] ElasticSolution fields_of(const AnalysisState& state) const;
+
+  const Model& model_;
+  OutputOptions options_;
+  StagingFolder folder_;
+  YieldPointIndex index_;
+  std::vector<PvdEntry> steps_;
+};
+
+}  // namespace bimrock

@@ -1,0 +1,127 @@
+#include <bimrock/io/run_summary.hpp>
+
+#include <bimrock/assembly/yield_points.hpp>
+#include <bimrock/io/history_writer.hpp>
+#include <bimrock/io/text_file.hpp>
+
+namespace bimrock {
+
+namespace {
+
+using nlohmann::json;
+
+json model_json(const Model& model) {
+  int supports = 0;
+  for (const Interface& f : model.interfaces)
+    supports += f.is_support() ? 1 : 0;
+  return {{"blocks", model.n_blocks()},
+          {"interfaces", model.n_interfaces() - supports},
+          {"support_interfaces", supports},
+          {"unknowns", model.n_dofs()},
+          {"area_m2", total_area(model)},
+          {"length_tolerance_m", model.tolerance},
+          {"plane", model.settings.plane == PlaneMode::strain ? "strain" : "stress"},
+          {"thickness_m", model.settings.thickness}};
+}
+
+json timings_json(const Timings& t) {
+  json j = json::object();
+  for (const auto& [phase, seconds] : t.phases)
+    j[phase] = seconds;
+  j["total"] = t.total();
+  return j;
+}
+
+json mechanism_json(const std::vector<YieldPoint>& points, const Collapse& c) {
+  static constexpr const char* kJointModes[] = {"slip+", "slip-", "opening"};
+  json list = json::array();
+  for (const MechanismEntry& e : c.mechanism) {
+    const YieldPoint& p = points[static_cast<std::size_t>(e.point)];
+    json item = {{"multiplier", e.multiplier}, {"x_m", p.position.x()}, {"y_m", p.position.y()}};
+    if (p.is_interface()) {
+      item["interface"] = p.owner;
+      item["block_i"] = p.block_i;
+      item["block_j"] = p.block_j;
+      item["mode"] = e.mode >= 0 && e.mode < 3 ? kJointModes[e.mode] : "?";
+    } else {
+      item["block"] = p.owner;
+      item["mode"] = "plane " + std::to_string(e.mode);
+    }
+    list.push_back(std::move(item));
+  }
+  return list;
+}
+
+}  // namespace
+
+json run_summary(const Model& model, const ElasticSolution& fields, const PlasticResult* plastic,
+                 const std::vector<std::string>& files) {
+  json j;
+  j["program"] = "bimrock";
+  j["case"] = model.source_file;
+  j["title"] = model.title;
+  j["units"] = "SI: m, N, Pa; tension positive";
+  j["analysis"] = plastic ? "nonlinear" : "elastic";
+  j["model"] = model_json(model);
+  j["mean_strain"] = {{"eps_x", fields.mean_strain(0)},
+                      {"eps_y", fields.mean_strain(1)},
+                      {"gamma_xy", fields.mean_strain(2)}};
+  json monitors = json::array();
+  for (std::size_t k = 0; k < model.monitors.size(); ++k) {
+    const Vec2& p = model.monitors[k].point;
+    const Vec2& u = fields.monitor_displacements[k];
+    monitors.push_back({{"name", model.monitors[k].name},
+                        {"x_m", p.x()},
+                        {"y_m", p.y()},
+                        {"ux_m", u.x()},
+                        {"uy_m", u.y()}});
+  }
+  j["monitors"] = monitors;
+  if (plastic) {
+    json stages = json::array();
+    for (std::size_t s = 0; s < model.stages.size(); ++s) {
+      const Stage& st = model.stages[s];
+      int carried = 0;
+      double factor = 0.0;
+      for (const IncrementRecord& r : plastic->history) {
+        if (r.stage != static_cast<int>(s))
+          continue;
+        ++carried;
+        factor = r.stage_factor;
+      }
+      json item = {{"name", st.name},
+                   {"increments", st.increments},
+                   {"carried_steps", carried},
+                   {"final_factor", factor},
+                   {"point_load_N", point_load_resultant(st)}};
+      if (st.control)
+        item["control_displacement_m"] = st.control->displacement;
+      stages.push_back(std::move(item));
+    }
+    j["stages"] = stages;
+    if (plastic->collapse) {
+      const Collapse& c = *plastic->collapse;
+      const Stage& st = model.stages[static_cast<std::size_t>(c.stage)];
+      const double load = point_load_resultant(st);
+      j["collapse"] = {{"stage", st.name},
+                       {"carried_factor", c.carried},
+                       {"failed_factor", c.failed},
+                       {"carried_point_load_N", c.carried * load},
+                       {"failed_point_load_N", c.failed * load},
+                       {"mechanism", mechanism_json(plastic->points, c)}};
+    } else {
+      j["collapse"] = nullptr;
+    }
+  }
+  j["timings_s"] = timings_json(plastic ? plastic->timings : fields.timings);
+  j["files"] = files;
+  return j;
+}
+
+void write_json(const json& json, const std::filesystem::path& file) {
+  std::ofstream out = open_for_writing(file);
+  out << json.dump(2) << '\n';
+  check_written(out, file);
+}
+
+}  // namespace bimrock

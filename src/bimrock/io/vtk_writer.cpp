@@ -1,0 +1,160 @@
+#include <bimrock/io/vtk_writer.hpp>
+
+#include <array>
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+
+#include <fmt/core.h>
+
+#include <bimrock/io/text_file.hpp>
+
+namespace bimrock {
+
+namespace {
+
+// One cell array: `components` values per cell, from `value(cell, component)`.
+void data_array(std::ofstream& out, const std::string& name, int components, int cells,
+                const std::function<double(int, int)>& value) {
+  out << fmt::format(
+             R"(        <DataArray type="Float64" Name="{}" NumberOfComponents="{}" format="ascii">)",
+             name, components)
+      << '\n';
+  for (int c = 0; c < cells; ++c) {
+    for (int k = 0; k < components; ++k)
+      out << fmt::format("{} ", value(c, k));
+    out << '\n';
+  }
+  out << "        </DataArray>\n";
+}
+
+int interface_state_code(const PlasticParts& plastic, int f) {
+  if (!plastic.index)
+    return 0;
+  int code = 0;
+  for (int p : plastic.index->interface_points[static_cast<std::size_t>(f)]) {
+    if (p < 0)
+      continue;
+    const PlasticState& s = (*plastic.states)[static_cast<std::size_t>(p)];
+    if (s.gap > 0.0)
+      code = 2;
+    else if (s.slip > 0.0 && code == 0)
+      code = 1;
+  }
+  return code;
+}
+
+int block_state_code(const PlasticParts& plastic, int b) {
+  if (!plastic.index)
+    return 0;
+  const int p = plastic.index->block_points[static_cast<std::size_t>(b)];
+  return p >= 0 && (*plastic.states)[static_cast<std::size_t>(p)].slip > 0.0 ? 1 : 0;
+}
+
+}  // namespace
+
+void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticParts& plastic,
+               const std::filesystem::path& file) {
+  const int nb = model.n_blocks();
+  const int nf = model.n_interfaces();
+  const int cells = nb + nf;
+  // Points: the corners of every block, then the two ends of every interface.
+  std::vector<Vec2> points;
+  std::vector<Vec2> moves;
+  std::vector<long> offsets;
+  for (int b = 0; b < nb; ++b) {
+    for (const Vec2& v : model.blocks[static_cast<std::size_t>(b)].polygon.vertices) {
+      points.push_back(v);
+      moves.push_back(displacement_at(model, b, v, fields.u));
+    }
+    offsets.push_back(static_cast<long>(points.size()));
+  }
+  for (const Interface& f : model.interfaces) {
+    for (const Vec2& v : {f.segment.a, f.segment.b}) {
+      points.push_back(v);
+      moves.push_back(displacement_at(model, f.block_i, v, fields.u));
+    }
+    offsets.push_back(static_cast<long>(points.size()));
+  }
+
+  std::ofstream out = open_for_writing(file);
+  out << "<?xml version=\"1.0\"?>\n"
+         "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
+      << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points.size(),
+                     cells)
+      << "      <Points>\n"
+         "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (const Vec2& p : points)
+    out << fmt::format("{} {} 0\n", p.x(), p.y());
+  out << "        </DataArray>\n      </Points>\n      <Cells>\n"
+         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t k = 0; k < points.size(); ++k)
+    out << k << (k % 16 == 15 ? '\n' : ' ');
+  out << "\n        </DataArray>\n"
+         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (long o : offsets)
+    out << o << ' ';
+  out << "\n        </DataArray>\n"
+         "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (int c = 0; c < cells; ++c)
+    out << (c < nb ? "7 " : "3 ");  // VTK_POLYGON, VTK_LINE
+  out << "\n        </DataArray>\n      </Cells>\n      <PointData Vectors=\"displacement\">\n";
+  data_array(out, "displacement", 3, static_cast<int>(moves.size()),
+             [&](int p, int k) { return k < 2 ? moves[static_cast<std::size_t>(p)](k) : 0.0; });
+  out << "      </PointData>\n      <CellData>\n";
+
+  auto block = [&](int c) -> const BlockState* {
+    return c < nb ? &fields.blocks[static_cast<std::size_t>(c)] : nullptr;
+  };
+  auto face = [&](int c) -> const InterfaceState* {
+    return c >= nb ? &fields.interfaces[static_cast<std::size_t>(c - nb)] : nullptr;
+  };
+  auto mean = [](const InterfaceState& s, auto member, int k) {
+    return 0.5 * ((s[0].*member)(k) + (s[1].*member)(k));
+  };
+  data_array(out, "kind", 1, cells, [&](int c, int) { return c < nb ? 0.0 : 1.0; });
+  data_array(out, "id", 1, cells, [&](int c, int) { return c < nb ? c : c - nb; });
+  data_array(out, "material", 1, cells, [&](int c, int) {
+    return c < nb ? model.blocks[static_cast<std::size_t>(c)].material
+                  : model.interfaces[static_cast<std::size_t>(c - nb)].joint_material;
+  });
+  data_array(out, "stress", 3, cells,
+             [&](int c, int k) { return block(c) ? block(c)->stress(k) : 0.0; });
+  data_array(out, "strain", 3, cells,
+             [&](int c, int k) { return block(c) ? block(c)->strain(k) : 0.0; });
+  data_array(out, "plastic_strain", 3, cells,
+             [&](int c, int k) { return block(c) ? block(c)->plastic(k) : 0.0; });
+  data_array(out, "block_state", 1, cells,
+             [&](int c, int) { return c < nb ? block_state_code(plastic, c) : 0; });
+  data_array(out, "sigma_n", 1, cells, [&](int c, int) {
+    return face(c) ? mean(*face(c), &InterfacePointState::stress, 0) : 0.0;
+  });
+  data_array(out, "tau", 1, cells, [&](int c, int) {
+    return face(c) ? mean(*face(c), &InterfacePointState::stress, 1) : 0.0;
+  });
+  data_array(out, "delta_n", 1, cells, [&](int c, int) {
+    return face(c) ? mean(*face(c), &InterfacePointState::delta, 0) : 0.0;
+  });
+  data_array(out, "delta_s", 1, cells, [&](int c, int) {
+    return face(c) ? mean(*face(c), &InterfacePointState::delta, 1) : 0.0;
+  });
+  data_array(out, "plastic_delta", 2, cells, [&](int c, int k) {
+    return face(c) ? mean(*face(c), &InterfacePointState::plastic, k) : 0.0;
+  });
+  data_array(out, "interface_state", 1, cells,
+             [&](int c, int) { return c >= nb ? interface_state_code(plastic, c - nb) : 0; });
+  out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
+  check_written(out, file);
+}
+
+void write_pvd(const std::vector<PvdEntry>& steps, const std::filesystem::path& file) {
+  std::ofstream out = open_for_writing(file);
+  out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
+  for (const PvdEntry& s : steps)
+    out << fmt::format("    <DataSet timestep=\"{}\" part=\"0\" file=\"{}\"/>\n", s.time, s.file);
+  out << "  </Collection>\n</VTKFile>\n";
+  check_written(out, file);
+}
+
+}  // namespace bimrock

@@ -1,0 +1,32 @@
+#pragma once
+/// @file VTK XML files that ParaView opens: one UnstructuredGrid (.vtu) per step, with the
+/// blocks as polygon cells and the interfaces as line cells, and a .pvd series over the steps.
+/// Every cell has its own points (blocks do not share corners: they move apart), so the
+/// displacement point array, applied with "Warp By Vector", shows opened joints as gaps.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <bimrock/analysis/elastic_analysis.hpp>
+
+namespace bimrock {
+
+/// Cell arrays (one value per cell; a field that does not apply to a cell's kind is 0 there):
+///  kind (0 block, 1 interface), id (block or interface index), material,
+///  stress [sigma_x, sigma_y, tau_xy] Pa, strain [eps_x, eps_y, gamma_xy], plastic_strain,
+///  block_state (0 elastic, 1 yielded),
+///  sigma_n, tau (Pa, mean of the two integration points), delta_n, delta_s (m, mean),
+///  plastic_delta [n, s] (m, mean), interface_state (0 elastic, 1 slipped, 2 open).
+/// Point array: displacement [ux, uy, 0] (m).
+/// @param plastic the plastic state of a nonlinear analysis (empty for an elastic one)
+void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticParts& plastic,
+               const std::filesystem::path& file);
+
+struct PvdEntry {
+  double time = 0.0;  ///< shown by ParaView as the time of the step (e.g. the load factor)
+  std::string file;   ///< relative to the .pvd
+};
+
+void write_pvd(const std::vector<PvdEntry>& steps, const std::filesystem::path& file);
+
+}  // namespace bimrock

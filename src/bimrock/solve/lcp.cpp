@@ -1,0 +1,112 @@
+#include <bimrock/solve/lcp.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <istream>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+
+namespace bimrock {
+
+void check_lcp(const LcpProblem& problem) {
+  if (problem.m.rows() != problem.m.cols() || problem.m.rows() != problem.q.size()) {
+    throw std::invalid_argument("LCP: M must be square and match q in size");
+  }
+  if (!problem.m.allFinite() || !problem.q.allFinite()) {
+    throw std::invalid_argument("LCP: M and q must be finite");
+  }
+}
+
+const char* to_string(LcpStatus status) {
+  switch (status) {
+    case LcpStatus::solved:
+      return "solved";
+    case LcpStatus::no_solution:
+      return "no solution";
+    case LcpStatus::iteration_limit:
+      return "iteration limit";
+    case LcpStatus::numerical_failure:
+      return "numerical failure";
+  }
+  return "?";
+}
+
+double LcpResiduals::worst_relative() const {
+  return std::max({z_violation, w_violation, complementarity});
+}
+
+namespace {
+
+// a / b for a scale b >= 0; 0 / 0 counts as 0 (an exactly zero row has an exactly zero w_i).
+double ratio(double a, double b) {
+  return a == 0.0 ? 0.0 : a / b;
+}
+
+}  // namespace
+
+LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z) {
+  const Eigen::VectorXd w = problem.m * z + problem.q;
+  const Eigen::VectorXd s = problem.m.cwiseAbs() * z.cwiseAbs() + problem.q.cwiseAbs();
+  const double z_scale = z.size() == 0 ? 0.0 : z.cwiseAbs().maxCoeff();
+  LcpResiduals r;
+  for (Eigen::Index i = 0; i < z.size(); ++i) {
+    r.min_z = i == 0 ? z(i) : std::min(r.min_z, z(i));
+    r.min_w = i == 0 ? w(i) : std::min(r.min_w, w(i));
+    r.max_complementarity = std::max(r.max_complementarity, std::abs(z(i) * w(i)));
+    r.z_violation = std::max(r.z_violation, ratio(std::max(0.0, -z(i)), z_scale));
+    r.w_violation = std::max(r.w_violation, ratio(std::max(0.0, -w(i)), s(i)));
+    const double pair = std::min(ratio(std::abs(z(i)), z_scale), ratio(std::abs(w(i)), s(i)));
+    r.complementarity = std::max(r.complementarity, pair);
+  }
+  return r;
+}
+
+LcpResult make_lcp_result(const LcpProblem& problem, LcpStatus status, Eigen::VectorXd z,
+                          int steps) {
+  LcpResult result;
+  result.status = status;
+  result.w = problem.m * z + problem.q;
+  result.residuals = measure(problem, z);
+  result.z = std::move(z);
+  result.steps = steps;
+  return result;
+}
+
+namespace {
+constexpr const char* kHeader = "bimrock-lcp";
+constexpr int kVersion = 1;
+}  // namespace
+
+void write_lcp(std::ostream& out, const LcpProblem& problem) {
+  const auto old_precision = out.precision(std::numeric_limits<double>::max_digits10);
+  out << kHeader << ' ' << kVersion << '\n' << problem.size() << '\n';
+  for (Eigen::Index i = 0; i < problem.size(); ++i) {
+    for (Eigen::Index j = 0; j < problem.size(); ++j)
+      out << problem.m(i, j) << ' ';
+    out << "  " << problem.q(i) << '\n';
+  }
+  out.precision(old_precision);
+}
+
+LcpProblem read_lcp(std::istream& in) {
+  std::string header;
+  int version = 0;
+  Eigen::Index n = -1;
+  if (!(in >> header >> version >> n) || header != kHeader || version != kVersion || n < 0) {
+    throw std::runtime_error("read_lcp: not a bimrock-lcp version 1 stream");
+  }
+  LcpProblem p{Eigen::MatrixXd(n, n), Eigen::VectorXd(n)};
+  for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index j = 0; j < n; ++j)
+      in >> p.m(i, j);
+    in >> p.q(i);
+  }
+  if (!in)
+    throw std::runtime_error("read_lcp: stream ended before the " + std::to_string(n) + " x " +
+                             std::to_string(n) + " problem was read");
+  return p;
+}
+
+}  // namespace bimrock

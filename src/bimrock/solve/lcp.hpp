@@ -1,0 +1,88 @@
+#pragma once
+/// @file The linear complementarity problem of one load increment, as plain data, and what every
+/// LCP solver shares: the result, the measured residuals and the solver interface (STYLE.md
+/// practices 6 and 8). Find z >= 0 with w = M z + q >= 0 and z . w = 0; in the analysis z is the
+/// vector of plastic multipliers lambda, w the slacks nu and M = N - C K^-1 Phi (eqs. 24, 28).
+#include <iosfwd>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace bimrock {
+
+/// The LCP (q, M). Dense for now: the candidate rows of one increment are few.
+struct LcpProblem {
+  Eigen::MatrixXd m;  ///< n x n; symmetric positive semi-definite for associated flow
+  Eigen::VectorXd q;  ///< n
+  [[nodiscard]] Eigen::Index size() const { return q.size(); }
+};
+
+/// Throws std::invalid_argument unless M is square, q matches it and
+/// every entry is finite.
+void check_lcp(const LcpProblem& problem);
+
+enum class LcpStatus {
+  solved,             ///< z, w satisfy the LCP to the solver's accuracy (see residuals)
+  no_solution,        ///< the method proved (or, for some M, concluded) that none exists: collapse
+  iteration_limit,    ///< gave up: the pivot or iteration budget ran out
+  numerical_failure,  ///< round-off spoiled the result; not a collapse (cut the increment)
+};
+
+[[nodiscard]] const char* to_string(LcpStatus status);
+
+/// How well a candidate z satisfies the LCP, measured on the unscaled problem.
+/// The relative measures are invariant under positive scaling of the rows and columns of M:
+/// row i is compared with the size of the terms that sum to w_i, s_i = |q_i| + sum_j |M_ij z_j|,
+/// and z with its largest entry |z|_inf.
+struct LcpResiduals {
+  // absolute
+  double min_z = 0.0;                ///< min_i z_i (>= 0 when feasible)
+  double min_w = 0.0;                ///< min_i w_i (>= 0 when feasible)
+  double max_complementarity = 0.0;  ///< max_i |z_i w_i|
+  // relative
+  double z_violation = 0.0;      ///< max_i max(0, -z_i) / |z|_inf
+  double w_violation = 0.0;      ///< max_i max(0, -w_i) / s_i
+  double complementarity = 0.0;  ///< max_i min(|z_i| / |z|_inf, |w_i| / s_i): one of each pair is 0
+  [[nodiscard]] double worst_relative() const;
+};
+
+/// Residuals of z for the problem (w = M z + q computed here).
+[[nodiscard]] LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z);
+
+struct LcpResult {
+  LcpStatus status = LcpStatus::numerical_failure;
+  Eigen::VectorXd z;  ///< the multipliers (for a failure: the last iterate, for information)
+  Eigen::VectorXd w;  ///< M z + q, computed from the returned z in unscaled form
+  int steps = 0;      ///< pivots (Lemke), sweeps (Gauss-Seidel) or bases tried (enumeration)
+  LcpResiduals residuals;
+  /// For no_solution, when the method finds one: a direction r >= 0, |r|_inf = 1, of unbounded
+  /// z (Lemke's secondary ray). For positive semi-definite M it certifies that no solution exists
+  /// (M^T r = 0, q . r < 0) and is the mechanism of the collapse. Empty otherwise.
+  Eigen::VectorXd ray;
+};
+
+/// The result for a given z: w and the residuals computed from the problem.
+[[nodiscard]] LcpResult make_lcp_result(const LcpProblem& problem, LcpStatus status,
+                                        Eigen::VectorXd z, int steps);
+
+/// The interface every LCP solver implements, so Lemke, projected Gauss-Seidel and later a
+/// sparse or distributed backend sit side by side and are compared on the same problems.
+class LcpSolver {
+ public:
+  virtual ~LcpSolver() = default;
+  [[nodiscard]] virtual std::string name() const = 0;
+  /// Work that depends only on the structure of M and can serve several solves (a sparse
+  /// backend's symbolic analysis). The dense solvers need none.
+  virtual void setup(const LcpProblem& /*problem*/) {}
+  /// @param warm_start a guess of z (e.g. the previous increment's); solvers may ignore it
+  [[nodiscard]] virtual LcpResult solve(const LcpProblem& problem,
+                                        const Eigen::VectorXd* warm_start = nullptr) = 0;
+};
+
+/// Writes the problem as text with every digit needed to read back the same doubles, so the LCP
+/// of a failing increment can be replayed in a test (STYLE.md practice 8).
+void write_lcp(std::ostream& out, const LcpProblem& problem);
+/// Reads what write_lcp wrote; throws std::runtime_error on a malformed stream.
+[[nodiscard]] LcpProblem read_lcp(std::istream& in);
+
+}  // namespace bimrock
