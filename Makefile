@@ -43,10 +43,14 @@ demo: build
 	  echo "== example 1 (Zhang & Lu, Table 2): $$c"; \
 	  ./build/release/bimrock run examples/jointed_rock_mass/$$c.yaml --output $(DEMO_OUT)/$$c || exit 1; \
 	done
+	@echo "== example 2 (Zhang & Lu): pull-out of a half-brick, collapse at P = 2C = 40 kN"
+	@./build/release/bimrock run examples/pull_out/case.yaml --output results/pull_out
 	@echo
-	@echo "Results of the demo are in $(DEMO_OUT)/<case>/: summary.json (mean strain of the mass),"
-	@echo "blocks.csv, interfaces.csv, and results.pvd + vtk/ to open in ParaView."
-	@echo "What they show: examples/jointed_rock_mass/README.md"
+	@echo "Results of the demo (SI units):"
+	@echo "  $(DEMO_OUT)/<case>/: summary.json (mean strain of the mass), blocks.csv, interfaces.csv,"
+	@echo "    results.pvd + vtk/ to open in ParaView; examples/jointed_rock_mass/README.md explains them."
+	@echo "  results/pull_out/: plot_A.png (load-displacement at A), collapse.png (the mechanism),"
+	@echo "    history.csv, summary.json (collapse bracket); examples/pull_out/README.md explains them."
 
 bench: deps
 	cmake --preset bench

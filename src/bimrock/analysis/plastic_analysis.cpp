@@ -21,8 +21,8 @@ struct StageContext {
   const std::vector<YieldPoint>& points;
   const SparseCholesky& k;
   const Stage& stage;
-  Eigen::VectorXd x_ref;    // K^-1 P_stage: displacement of the whole stage load, elastic
-  Eigen::VectorXd control;  // displacement control: u_monitor . direction = control . U
+  Eigen::VectorXd x_ref;      // K^-1 P_stage: displacement of the whole stage load, elastic
+  Eigen::VectorXd control;    // displacement control: u_monitor . direction = control . U
   double control_rate = 0.0;  // control . x_ref
 };
 
@@ -33,9 +33,9 @@ struct Trial {
   std::vector<YieldRow> rows;
   Eigen::VectorXd lambda;  // increments of the multipliers (opening: of the gap)
   Eigen::VectorXd du;
-  Eigen::VectorXd ray;     // collapse: Lemke's secondary ray, the mechanism's multipliers
-  double kink = 1.0;       // < 1: the fraction of the step at which a softening law reached
-                           // its residual value (the step must stop there)
+  Eigen::VectorXd ray;  // collapse: Lemke's secondary ray, the mechanism's multipliers
+  double kink = 1.0;    // < 1: the fraction of the step at which a softening law reached
+                        // its residual value (the step must stop there)
   int lcp_size = 0;
   int pivots = 0;
   int rounds = 0;
@@ -54,7 +54,8 @@ double check_all_yield_functions(const StageContext& ctx, const AnalysisState& s
     const Eigen::VectorXd stress = local_stress(ctx.model, ctx.points[p], s.points[p], s.u);
     const double f = linearize(ctx.model, ctx.points[p], s.points[p], stress).f.maxCoeff();
     worst = std::max(worst, f);
-    if (f > tol) violators.push_back(static_cast<int>(p));
+    if (f > tol)
+      violators.push_back(static_cast<int>(p));
   }
   return worst;
 }
@@ -66,13 +67,15 @@ double first_kink(const Model& model, const std::vector<YieldPoint>& points,
   double fraction = 1.0;
   auto crossing = [&](double old_kappa, double new_kappa, const Softening& law) {
     const double d = law.distance;
-    if (!std::isfinite(d) || law.peak == law.residual) return;
+    if (!std::isfinite(d) || law.peak == law.residual)
+      return;
     const double margin = 1e-9 * std::max(d, 1e-300);
     if (old_kappa < d - margin && new_kappa > d + margin)
       fraction = std::min(fraction, (d - old_kappa) / (new_kappa - old_kappa));
   };
   for (std::size_t p = 0; p < points.size(); ++p) {
-    if (!points[p].is_interface()) continue;
+    if (!points[p].is_interface())
+      continue;
     const JointStrength& law = *model.joint_materials[points[p].material].strength;
     crossing(before.points[p].slip, after.points[p].slip, law.cohesion);
     crossing(before.points[p].slip, after.points[p].slip, law.friction);
@@ -105,8 +108,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   const bool control = ctx.stage.control.has_value();
   Trial t;
   // predict_elastic: the increment if nothing yielded.
-  const Eigen::VectorXd du_elastic =
-      control ? Eigen::VectorXd((step / ctx.control_rate) * ctx.x_ref) : Eigen::VectorXd(step * ctx.x_ref);
+  const Eigen::VectorXd du_elastic = control
+                                         ? Eigen::VectorXd((step / ctx.control_rate) * ctx.x_ref)
+                                         : Eigen::VectorXd(step * ctx.x_ref);
   // select_candidate_rows: open points, and points whose elastic predictor reaches yield.
   std::vector<char> candidate(ctx.points.size(), 0);
   double scale = 0.0;
@@ -116,11 +120,14 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     const Eigen::VectorXd stress = local_stress(model, point, s.points[p], s.u);
     const LocalYield y = linearize(model, point, s.points[p], stress);
     const Eigen::VectorXd predicted = y.f + y.a * local_of(model, point, du_elastic);
-    scale = std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
-    if (s.points[p].gap > 0.0 || predicted.maxCoeff() > 0.0) candidate[p] = 1;
+    scale =
+        std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
+    if (s.points[p].gap > 0.0 || predicted.maxCoeff() > 0.0)
+      candidate[p] = 1;
   }
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
-    const Eigen::VectorXd stress = local_stress(model, ctx.points[p], s.points[p], s.u + du_elastic);
+    const Eigen::VectorXd stress =
+        local_stress(model, ctx.points[p], s.points[p], s.u + du_elastic);
     scale = std::max(scale, stress.cwiseAbs().maxCoeff());
   }
   const double tol = opt.yield_tolerance * std::max(scale, 1.0);
@@ -128,12 +135,14 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   for (t.rounds = 1; t.rounds <= opt.max_rounds; ++t.rounds) {
     std::vector<int> candidates;
     for (std::size_t p = 0; p < candidate.size(); ++p)
-      if (candidate[p]) candidates.push_back(static_cast<int>(p));
+      if (candidate[p])
+        candidates.push_back(static_cast<int>(p));
     const YieldSystem sys = assemble_yield_system(model, ctx.points, s.points, s.u, candidates);
     const int m = sys.size();
     t.lcp_size = m;
     // solve_lcp: nu = -f0 - C dU + N lambda with dU = dfactor x_ref + K^-1 Phi lambda.
-    const Eigen::MatrixXd y = m > 0 ? ctx.k.solve(Eigen::MatrixXd(sys.phi)) : Eigen::MatrixXd(model.n_dofs(), 0);
+    const Eigen::MatrixXd y =
+        m > 0 ? ctx.k.solve(Eigen::MatrixXd(sys.phi)) : Eigen::MatrixXd(model.n_dofs(), 0);
     const Eigen::VectorXd cx = sys.c * ctx.x_ref;
     Eigen::MatrixXd lcp_m = sys.n - sys.c * y;
     Eigen::VectorXd lcp_q;
@@ -178,7 +187,8 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       z = r.z;
     }
     const Eigen::VectorXd lambda = z - gap_old;
-    const double dfactor = control ? (step - (m > 0 ? h.dot(lambda) : 0.0)) / ctx.control_rate : step;
+    const double dfactor =
+        control ? (step - (m > 0 ? h.dot(lambda) : 0.0)) / ctx.control_rate : step;
     t.du = dfactor * ctx.x_ref + y * lambda;
     t.next = s;
     t.next.u += t.du;
@@ -189,7 +199,8 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     check_all_yield_functions(ctx, t.next, tol, violators);
     bool added = false;
     for (int p : violators) {
-      if (!candidate[p]) candidate[p] = added = true;
+      if (!candidate[p])
+        candidate[p] = added = true;
     }
     if (!added) {
       t.rows = sys.rows;
@@ -203,15 +214,18 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   return t;
 }
 
-IncrementRecord record(const Model& model, const Trial& t, int stage, int increment, double seconds) {
+IncrementRecord record(const Model& model, const Trial& t, int stage, int increment,
+                       double seconds) {
   IncrementRecord r;
   r.stage = stage;
   r.increment = increment;
   r.stage_factor = t.next.stage_factor;
-  for (const Monitor& m : model.monitors) r.monitors.push_back(displacement_at(model, m.block, m.point, t.next.u));
+  for (const Monitor& m : model.monitors)
+    r.monitors.push_back(displacement_at(model, m.block, m.point, t.next.u));
   std::vector<char> yielded(t.next.points.size(), 0);
   for (std::size_t k = 0; k < t.rows.size(); ++k)
-    if (std::abs(t.lambda(static_cast<Eigen::Index>(k))) > 0.0) yielded[t.rows[k].point] = 1;
+    if (std::abs(t.lambda(static_cast<Eigen::Index>(k))) > 0.0)
+      yielded[t.rows[k].point] = 1;
   for (std::size_t p = 0; p < yielded.size(); ++p) {
     r.yielding_points += yielded[p];
     r.open_points += t.next.points[p].gap > 0.0 ? 1 : 0;
@@ -229,7 +243,8 @@ Collapse describe_collapse(int stage, double carried, double failed, const Trial
                            const Trial* last) {
   Collapse c{stage, carried, failed, {}, {}};
   const Trial* source = failure && failure->ray.size() > 0 ? failure : last;
-  if (!source || source->rows.empty()) return c;
+  if (!source || source->rows.empty())
+    return c;
   const Eigen::VectorXd& flow = source == failure ? failure->ray : last->lambda;
   const double top = flow.cwiseAbs().maxCoeff();
   for (std::size_t k = 0; k < source->rows.size(); ++k) {
@@ -238,7 +253,8 @@ Collapse describe_collapse(int stage, double carried, double failed, const Trial
       c.mechanism.push_back({source->rows[k].point, source->rows[k].mode, l / top});
   }
   const double norm = source->du.norm();
-  if (norm > 0.0) c.direction = source->du / norm;
+  if (norm > 0.0)
+    c.direction = source->du / norm;
   return c;
 }
 
@@ -253,16 +269,26 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   }
   SparseCholesky k;
   {
-    ScopedTimer t(result.timings, "assemble");
-    const SparseMatrix lower = assemble_stiffness_lower(model);
+    SparseMatrix lower;
+    {
+      ScopedTimer t(result.timings, "assemble");
+      lower = assemble_stiffness_lower(model);
+    }
     ScopedTimer f(result.timings, "factorize");
     k.analyze(lower, 6);
-    if (!k.factorize(lower)) report_singular_stiffness(model, k.failed_column());
+    if (!k.factorize(lower))
+      report_singular_stiffness(model, k.failed_column());
   }
   result.points = make_yield_points(model);
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
   Lemke lemke;
+  const auto increments_start = std::chrono::steady_clock::now();
+  auto time_increments = [&] {
+    result.timings.add(
+        "increments",
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - increments_start).count());
+  };
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
     StageContext ctx{model, result.points, k, stage, {}, {}, 0.0};
@@ -291,21 +317,26 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       double rest = step;
       for (int cuts = 0; cuts < 100 && t.status == Trial::Status::carried && t.kink < 1.0; ++cuts) {
         const Trial to_kink = try_increment(ctx, result.state, t.kink * rest, opt, lemke);
-        if (to_kink.status != Trial::Status::carried) break;
+        if (to_kink.status != Trial::Status::carried)
+          break;
         const double done = to_kink.next.stage_factor - result.state.stage_factor;
         result.state = to_kink.next;
-        result.history.push_back(record(model, to_kink, st, ++increment,
-                                        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
-        if (on_increment) on_increment(result.history.back(), result.state);
+        result.history.push_back(record(
+            model, to_kink, st, ++increment,
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
+        if (on_increment)
+          on_increment(result.history.back(), result.state);
         last = to_kink;
         rest = stage.control ? rest * (1.0 - t.kink) : rest - done;
         t = try_increment(ctx, result.state, rest, opt, lemke);
       }
       auto finish = [&](const Trial& carried) {
-        const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double secs =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         result.state = carried.next;
         result.history.push_back(record(model, carried, st, ++increment, secs));
-        if (on_increment) on_increment(result.history.back(), result.state);
+        if (on_increment)
+          on_increment(result.history.back(), result.state);
         last = carried;
       };
       if (t.status == Trial::Status::carried) {
@@ -320,10 +351,12 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       double failing_step = step;
       std::optional<double> proven;  // stage factor of the nearest ray
       Trial failure = t;
-      if (t.status == Trial::Status::collapse) proven = carried + step;
+      if (t.status == Trial::Status::collapse)
+        proven = carried + step;
       for (int b = 0; b < opt.max_bisections; ++b) {
         const double upper = proven ? *proven : carried + failing_step;
-        if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper)) break;
+        if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper))
+          break;
         const Trial half = try_increment(ctx, result.state, 0.5 * failing_step, opt, lemke);
         if (half.status == Trial::Status::carried) {
           finish(half);
@@ -335,13 +368,15 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         failing_step *= 0.5;
       }
       if (!proven)
-        throw std::runtime_error("stage '" + stage.name + "': the LCP of the increment at stage factor " +
+        throw std::runtime_error("stage '" + stage.name +
+                                 "': the LCP of the increment at stage factor " +
                                  std::to_string(carried) + " could not be solved accurately");
-      result.collapse = describe_collapse(st, carried, *proven, &failure,
-                                          last ? &*last : nullptr);
+      result.collapse = describe_collapse(st, carried, *proven, &failure, last ? &*last : nullptr);
+      time_increments();
       return result;
     }
   }
+  time_increments();
   return result;
 }
 

@@ -1,0 +1,167 @@
+// The shipped examples, run as a user runs them (the bimrock command on the case files under
+// examples/), with their results read back: summary.json with nlohmann/json, the VTK files with
+// meshio (an independent reader). Expected numbers come from hand derivations, reciprocity and
+// superposition (example 1), and plasticity theory (example 2); each is named where it is used.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "support/results_folder.hpp"
+#include "support/run_bimrock.hpp"
+
+namespace bimrock {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Runs `bimrock run <example> -o <tmp>/results` and returns the results folder.
+fs::path run_example(const std::string& relative_case) {
+  const fs::path folder = testing::fresh_folder("bimrock-example");
+  const std::string cmd = std::string("'") + BIMROCK_BINARY + "' --quiet run '" +
+                          BIMROCK_SOURCE_DIR + "/examples/" + relative_case + "' -o '" +
+                          (folder / "results").string() + "'";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  return folder / "results";
+}
+
+double strain(const nlohmann::json& summary, const char* component) {
+  return summary.at("mean_strain").at(component).get<double>();
+}
+
+// Example 1 (Zhang & Lu, Table 2): 10 x 10 blocks of 0.2 m, rock E = 89 GPa, nu = 0.26, plane
+// strain; vertical joints continuous (k_n = 395.9 GPa/m), horizontal joints staggered.
+constexpr double kE = 89e9, kNu = 0.26, kKnVertical = 395.9e9, kSize = 0.2;
+constexpr int kN = 10;
+
+TEST(JointedRockMassExample, HorizontalLoadMatchesTheHandDerivation) {
+  // Across the continuous vertical joints a uniform stress sigma_x is exact: each column
+  // strains by (1 - nu^2)/E sigma_x, each of the n - 1 joints opens by sigma_x / k_n, and the
+  // blocks expand sideways by -nu (1 + nu)/E sigma_x (plane strain).
+  const fs::path out = run_example("jointed_rock_mass/case2_horizontal.yaml");
+  const nlohmann::json s = testing::read_json(out / "summary.json");
+  const double sx = -5e6;
+  const double eps_x = sx * ((1 - kNu * kNu) / kE + (kN - 1) / (kN * kSize * kKnVertical));
+  const double eps_y = -kNu * (1 + kNu) / kE * sx;
+  EXPECT_NEAR(strain(s, "eps_x"), eps_x, 1e-9 * std::abs(eps_x));
+  EXPECT_NEAR(strain(s, "eps_y"), eps_y, 1e-9 * std::abs(eps_y));
+  EXPECT_NEAR(strain(s, "gamma_xy"), 0.0, 1e-9 * std::abs(eps_x));
+
+  // The VTK file read back by meshio: one polygon per block (5 columns of 10 and 5 staggered
+  // columns of 11: 105, counted by hand), one line per interface, and in every block the
+  // applied stress (the uniform field is exact).
+  const nlohmann::json vtu = testing::read_vtu_with_meshio(out / "vtk" / "step_0001.vtu");
+  const int blocks = 5 * 10 + 5 * 11;
+  const nlohmann::json& model = s.at("model");
+  EXPECT_EQ(vtu.at("cells").at("polygon").get<int>(), blocks);
+  EXPECT_EQ(vtu.at("cells").at("line").get<int>(),
+            model.at("interfaces").get<int>() + model.at("support_interfaces").get<int>());
+  const auto& stress = vtu.at("cell_data").at("stress");
+  const auto& kind = vtu.at("cell_data").at("kind");
+  int checked = 0;
+  for (std::size_t c = 0; c < stress.size(); ++c) {
+    if (kind[c][0].get<double>() != 0.0)
+      continue;
+    EXPECT_NEAR(stress[c][0].get<double>(), sx, 1e-6 * std::abs(sx)) << "cell " << c;
+    EXPECT_NEAR(stress[c][1].get<double>(), 0.0, 1e-6 * std::abs(sx)) << "cell " << c;
+    EXPECT_NEAR(stress[c][2].get<double>(), 0.0, 1e-6 * std::abs(sx)) << "cell " << c;
+    ++checked;
+  }
+  EXPECT_EQ(checked, blocks);
+  // The displacement point data: the right face moves by eps_x times the width 2 m.
+  double max_ux = 0.0;
+  for (const auto& u : vtu.at("point_data").at("displacement"))
+    max_ux = std::max(max_ux, std::abs(u[0].get<double>()));
+  EXPECT_NEAR(max_ux, std::abs(eps_x) * kN * kSize, 1e-6 * std::abs(eps_x) * kN * kSize);
+  fs::remove_all(out.parent_path());
+}
+
+TEST(JointedRockMassExample, ComplianceIsSymmetricAndLoadsSuperpose) {
+  // Betti's reciprocity for the mean strain under uniform boundary tractions: the strain across
+  // one direction per unit stress along the other is the same both ways (the paper's Table 2
+  // shows it too: 0.18405 / 5 = 0.36809 / 10). Case 3 = case 1 + case 2 (linearity).
+  const fs::path out1 = run_example("jointed_rock_mass/case1_vertical.yaml");
+  const fs::path out2 = run_example("jointed_rock_mass/case2_horizontal.yaml");
+  const fs::path out3 = run_example("jointed_rock_mass/case3_biaxial.yaml");
+  const nlohmann::json s1 = testing::read_json(out1 / "summary.json");
+  const nlohmann::json s2 = testing::read_json(out2 / "summary.json");
+  const nlohmann::json s3 = testing::read_json(out3 / "summary.json");
+  const double sigma1 = -10e6, sigma2 = -5e6;  // vertical, horizontal
+  EXPECT_NEAR(strain(s1, "eps_x") / sigma1, strain(s2, "eps_y") / sigma2,
+              1e-9 * std::abs(strain(s2, "eps_y") / sigma2));
+  for (const char* c : {"eps_x", "eps_y"}) {
+    EXPECT_NEAR(strain(s3, c), strain(s1, c) + strain(s2, c), 1e-9 * std::abs(strain(s3, c))) << c;
+  }
+  for (const fs::path& p : {out1, out2, out3})
+    fs::remove_all(p.parent_path());
+}
+
+// Example 2 (Zhang & Lu): a half-brick pulled out of a jointed wall by P at A; plasticity
+// theory (and the paper) give collapse at P = 2 c L t = 2 x 20 kPa x 1 m x 1 m = 40 kN.
+TEST(PullOutExample, CollapseLoadPlotAndMechanismAreWritten) {
+  const fs::path out = run_example("pull_out/case.yaml");
+  const nlohmann::json s = testing::read_json(out / "summary.json");
+  ASSERT_FALSE(s.at("collapse").is_null());
+  const nlohmann::json& c = s.at("collapse");
+  EXPECT_EQ(c.at("stage").get<std::string>(), "pull");
+  EXPECT_NEAR(c.at("carried_point_load_N").get<double>(), 40e3, 40.0);  // 0.1 %
+  EXPECT_NEAR(c.at("failed_point_load_N").get<double>(), 40e3, 40.0);
+  EXPECT_LE(c.at("carried_point_load_N").get<double>(), c.at("failed_point_load_N").get<double>());
+  // The mechanism: the two horizontal 1 m joints of the half-brick slide (the loaded block is
+  // blocks[8] in the case file: row 2, the last of five).
+  int sliding_along_y_0_5 = 0, sliding_along_y_1 = 0;
+  for (const auto& m : c.at("mechanism")) {
+    const std::string mode = m.at("mode").get<std::string>();
+    if (mode.rfind("slip", 0) != 0 || m.at("x_m").get<double>() < 5.0 - 1e-9)
+      continue;
+    const double y = m.at("y_m").get<double>();
+    sliding_along_y_0_5 += std::abs(y - 0.5) < 1e-9 ? 1 : 0;
+    sliding_along_y_1 += std::abs(y - 1.0) < 1e-9 ? 1 : 0;
+  }
+  EXPECT_GE(sliding_along_y_0_5, 1);
+  EXPECT_GE(sliding_along_y_1, 1);
+
+  // history.csv: the point load grows by 2 kN a step up to the collapse (40 kN).
+  std::ifstream history(out / "history.csv");
+  std::string line;
+  std::getline(history, line);
+  EXPECT_EQ(line.rfind("stage,stage_name,increment,stage_factor,point_load_N,ux_A_m,uy_A_m", 0),
+            0u);
+  double last_load = 0.0;
+  int pull_rows = 0;
+  while (std::getline(history, line)) {
+    if (line.find(",pull,") == std::string::npos)
+      continue;
+    std::size_t pos = 0;
+    for (int k = 0; k < 4; ++k)
+      pos = line.find(',', pos) + 1;
+    last_load = std::stod(line.substr(pos));
+    ++pull_rows;
+  }
+  EXPECT_EQ(pull_rows, 20);  // 20 steps of 2 kN carried; the 21st is the one that fails
+  EXPECT_NEAR(last_load, 40e3, 1e-6 * 40e3);
+
+  // The plot and the pictures are real PNG files.
+  for (const char* png : {"plot_A.png", "collapse.png", "final.png"}) {
+    std::ifstream in(out / png, std::ios::binary);
+    char magic[8] = {};
+    in.read(magic, 8);
+    EXPECT_EQ(std::string(magic + 1, 3), "PNG") << png;
+  }
+  // One VTK step per carried increment plus the initial state, all listed in results.pvd.
+  const int steps =
+      static_cast<int>(std::count_if(fs::directory_iterator(out / "vtk"), fs::directory_iterator(),
+                                     [](const auto&) { return true; }));
+  EXPECT_EQ(steps, 1 + 1 + 20);  // start, gravity, 20 pull steps
+  const nlohmann::json last = testing::read_vtu_with_meshio(out / "vtk" / "step_0021.vtu");
+  const auto& state = last.at("cell_data").at("interface_state");
+  EXPECT_TRUE(std::any_of(state.begin(), state.end(), [](const auto& v) {
+    return v[0].template get<double>() == 1.0;
+  })) << "some interface has slipped";
+  fs::remove_all(out.parent_path());
+}
+
+}  // namespace
+}  // namespace bimrock
