@@ -15,6 +15,10 @@
 namespace bimrock {
 namespace {
 
+/// Plastic displacements of a load-controlled step more than this many times its elastic ones
+/// are a mechanism resolved only by round-off (see try_increment).
+constexpr double kMechanismRatio = 1e6;
+
 // What one stage needs besides the state: the factor of K and the stage's reference load.
 struct StageContext {
   const Model& model;
@@ -172,6 +176,23 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           t.du = y * r.ray;
         }
         return t;
+      }
+      if (r.status == LcpStatus::solved && !control && m > 0) {
+        // A mechanism that round-off turned into a very soft mode: with stiff (penalty)
+        // interfaces K^-1 is accurate only to ~ penalty x machine precision, so the exact null
+        // direction of M (e.g. all blocks flowing plastically together) appears as a tiny
+        // positive eigenvalue and the multipliers blow up instead of Lemke finding a ray.
+        // Plastic displacements that dwarf the elastic ones of the same step are that mechanism.
+        const Eigen::VectorXd flow = r.z - gap_old;
+        const double plastic = (y * flow).cwiseAbs().maxCoeff();
+        const double elastic = std::abs(step) * ctx.x_ref.cwiseAbs().maxCoeff();
+        if (plastic > kMechanismRatio * elastic) {
+          t.status = Trial::Status::collapse;
+          t.rows = sys.rows;
+          t.ray = flow.cwiseAbs() / flow.cwiseAbs().maxCoeff();
+          t.du = y * flow / flow.cwiseAbs().maxCoeff();
+          return t;
+        }
       }
       if (r.status != LcpStatus::solved) {
         if (std::getenv("BIMROCK_DEBUG_LCP"))
