@@ -129,9 +129,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     if (s.points[p].gap > 0.0 || predicted.maxCoeff() > 0.0)
       candidate[p] = 1;
   }
+  const Eigen::VectorXd u_elastic = s.u + du_elastic;  // once: not per point
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
-    const Eigen::VectorXd stress =
-        local_stress(model, ctx.points[p], s.points[p], s.u + du_elastic);
+    const Eigen::VectorXd stress = local_stress(model, ctx.points[p], s.points[p], u_elastic);
     scale = std::max(scale, stress.cwiseAbs().maxCoeff());
   }
   const double tol = opt.yield_tolerance * std::max(scale, 1.0);
