@@ -38,11 +38,12 @@ void run_plastic_gravity(benchmark::State& state, double tensile) {
     r = run_plastic_analysis(m);
   state.counters["blocks"] = m.n_blocks();
   state.counters["yield_points"] = static_cast<double>(r.points.size());
-  double lcp_max = 0, lcp_sum = 0, pivots = 0, seconds = 0;
+  double lcp_max = 0, lcp_sum = 0, pivots = 0, newton = 0, seconds = 0;
   for (const IncrementRecord& h : r.history) {
     lcp_max = std::max(lcp_max, static_cast<double>(h.lcp_size));
     lcp_sum += h.lcp_size;
     pivots += h.pivots;
+    newton += h.active_set_iterations;
     seconds += h.seconds;
   }
   const double n = std::max<double>(1.0, static_cast<double>(r.history.size()));
@@ -50,6 +51,7 @@ void run_plastic_gravity(benchmark::State& state, double tensile) {
   state.counters["lcp_rows_max"] = lcp_max;
   state.counters["lcp_rows_mean"] = lcp_sum / n;
   state.counters["pivots_per_increment"] = pivots / n;
+  state.counters["active_set_iterations_per_increment"] = newton / n;
   state.counters["s_per_increment"] = seconds / n;
   state.counters["yielding_last"] = r.history.empty() ? 0 : r.history.back().yielding_points;
   state.counters["open_last"] = r.history.empty() ? 0 : r.history.back().open_points;

@@ -9,6 +9,7 @@
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/assembly/kinematics.hpp>
+#include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
@@ -18,6 +19,11 @@ namespace {
 /// Plastic displacements of a load-controlled step more than this many times its elastic ones
 /// are a mechanism resolved only by round-off (see try_increment).
 constexpr double kMechanismRatio = 1e6;
+
+struct LcpSolvers {
+  ActiveSetLcp active_set;
+  Lemke lemke;
+};
 
 // What one stage needs besides the state: the factor of K and the stage's reference load.
 struct StageContext {
@@ -42,6 +48,7 @@ struct Trial {
                         // its residual value (the step must stop there)
   int lcp_size = 0;
   int pivots = 0;
+  int active_set_iterations = 0;
   int rounds = 0;
 };
 
@@ -107,7 +114,7 @@ void update_state(const YieldSystem& sys, const Eigen::VectorXd& lambda, const E
 // One increment from state s: `step` is the increment of the stage factor (load control) or of
 // the prescribed displacement (displacement control).
 Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step,
-                    const PlasticOptions& opt, Lemke& lemke) {
+                    const PlasticOptions& opt, LcpSolvers& solvers) {
   const Model& model = ctx.model;
   const bool control = ctx.stage.control.has_value();
   Trial t;
@@ -115,19 +122,19 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   const Eigen::VectorXd du_elastic = control
                                          ? Eigen::VectorXd((step / ctx.control_rate) * ctx.x_ref)
                                          : Eigen::VectorXd(step * ctx.x_ref);
-  // select_candidate_rows: open points, and points whose elastic predictor reaches yield.
-  std::vector<char> candidate(ctx.points.size(), 0);
+  // select_candidate_rows: open points, and points whose elastic predictor reaches yield by
+  // more than the tolerance of the final check (a joint that sits exactly on its tension
+  // cut-off, as the vertical joints of a free-standing wall do, is not a candidate for the
+  // round-off of its stress).
+  std::vector<double> predicted_f(ctx.points.size());
   double scale = 0.0;
-  std::vector<int> rows_of;
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
     const YieldPoint& point = ctx.points[p];
     const Eigen::VectorXd stress = local_stress(model, point, s.points[p], s.u);
     const LocalYield y = linearize(model, point, s.points[p], stress);
-    const Eigen::VectorXd predicted = y.f + y.a * local_of(model, point, du_elastic);
+    predicted_f[p] = (y.f + y.a * local_of(model, point, du_elastic)).maxCoeff();
     scale =
         std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
-    if (s.points[p].gap > 0.0 || predicted.maxCoeff() > 0.0)
-      candidate[p] = 1;
   }
   const Eigen::VectorXd u_elastic = s.u + du_elastic;  // once: not per point
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
@@ -135,6 +142,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     scale = std::max(scale, stress.cwiseAbs().maxCoeff());
   }
   const double tol = opt.yield_tolerance * std::max(scale, 1.0);
+  std::vector<char> candidate(ctx.points.size(), 0);
+  for (std::size_t p = 0; p < ctx.points.size(); ++p)
+    candidate[p] = s.points[p].gap > 0.0 || predicted_f[p] > tol ? 1 : 0;
 
   for (t.rounds = 1; t.rounds <= opt.max_rounds; ++t.rounds) {
     std::vector<int> candidates;
@@ -166,8 +176,18 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         gap_old(r) = s.points[sys.rows[r].point].gap;
     Eigen::VectorXd z = Eigen::VectorXd::Zero(m);
     if (m > 0) {
-      const LcpResult r = lemke.solve({lcp_m, lcp_q - lcp_m * gap_old});
-      t.pivots += r.steps;
+      // solve_lcp: the active-set method first (a few dense solves, warm-started from the open
+      // joints); Lemke where it does not converge, and it alone decides a collapse.
+      const LcpProblem problem{lcp_m, lcp_q - lcp_m * gap_old};
+      LcpResult r;
+      if (opt.active_set) {
+        r = solvers.active_set.solve(problem, gap_old.maxCoeff() > 0.0 ? &gap_old : nullptr);
+        t.active_set_iterations += r.steps;
+      }
+      if (r.status != LcpStatus::solved) {
+        r = solvers.lemke.solve(problem);
+        t.pivots += r.steps;
+      }
       if (r.status == LcpStatus::no_solution) {
         t.status = Trial::Status::collapse;
         t.rows = sys.rows;
@@ -253,6 +273,7 @@ IncrementRecord record(const Model& model, const Trial& t, int stage, int increm
   }
   r.lcp_size = t.lcp_size;
   r.pivots = t.pivots;
+  r.active_set_iterations = t.active_set_iterations;
   r.rounds = t.rounds;
   r.seconds = seconds;
   return r;
@@ -303,7 +324,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.points = make_yield_points(model);
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
-  Lemke lemke;
+  LcpSolvers solvers;
   const auto increments_start = std::chrono::steady_clock::now();
   auto time_increments = [&] {
     result.timings.add(
@@ -332,12 +353,12 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     int increment = 0;
     for (int n = 0; n < stage.increments; ++n) {
       const auto start = std::chrono::steady_clock::now();
-      Trial t = try_increment(ctx, result.state, step, opt, lemke);
+      Trial t = try_increment(ctx, result.state, step, opt, solvers);
       // A softening law that reaches its residual value inside the step: stop the step there
       // and carry the rest as a further step (the laws are linear on each side of the kink).
       double rest = step;
       for (int cuts = 0; cuts < 100 && t.status == Trial::Status::carried && t.kink < 1.0; ++cuts) {
-        const Trial to_kink = try_increment(ctx, result.state, t.kink * rest, opt, lemke);
+        const Trial to_kink = try_increment(ctx, result.state, t.kink * rest, opt, solvers);
         if (to_kink.status != Trial::Status::carried)
           break;
         const double done = to_kink.next.stage_factor - result.state.stage_factor;
@@ -349,7 +370,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
           on_increment(result.history.back(), result.state);
         last = to_kink;
         rest = stage.control ? rest * (1.0 - t.kink) : rest - done;
-        t = try_increment(ctx, result.state, rest, opt, lemke);
+        t = try_increment(ctx, result.state, rest, opt, solvers);
       }
       auto finish = [&](const Trial& carried) {
         const double secs =
@@ -378,7 +399,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         const double upper = proven ? *proven : carried + failing_step;
         if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper))
           break;
-        const Trial half = try_increment(ctx, result.state, 0.5 * failing_step, opt, lemke);
+        const Trial half = try_increment(ctx, result.state, 0.5 * failing_step, opt, solvers);
         if (half.status == Trial::Status::carried) {
           finish(half);
           carried = result.state.stage_factor;

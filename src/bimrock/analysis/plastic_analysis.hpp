@@ -20,25 +20,29 @@ struct PlasticOptions {
   int max_rounds = 30;
   /// A yield function counts as violated above this fraction of the stress scale.
   double yield_tolerance = 1e-9;
+  /// Solve each LCP by the primal-dual active-set method first, Lemke only where it fails
+  /// (false: Lemke always; the answers agree, only the time differs).
+  bool active_set = true;
 };
 
 /// The state the analysis carries from increment to increment.
 struct AnalysisState {
-  Eigen::VectorXd u;                  ///< total block unknowns
-  std::vector<PlasticState> points;   ///< per yield point
-  double stage_factor = 0.0;          ///< fraction of the current stage's loads applied
+  Eigen::VectorXd u;                 ///< total block unknowns
+  std::vector<PlasticState> points;  ///< per yield point
+  double stage_factor = 0.0;         ///< fraction of the current stage's loads applied
 };
 
 struct IncrementRecord {
   int stage = 0;
-  int increment = 0;          ///< 1-based within the stage, counting bisected steps
-  double stage_factor = 0.0;  ///< after the increment
+  int increment = 0;           ///< 1-based within the stage, counting bisected steps
+  double stage_factor = 0.0;   ///< after the increment
   std::vector<Vec2> monitors;  ///< monitor displacements after the increment [m]
-  int yielding_points = 0;    ///< points with plastic flow in this increment
-  int open_points = 0;        ///< interface points open after the increment
+  int yielding_points = 0;     ///< points with plastic flow in this increment
+  int open_points = 0;         ///< interface points open after the increment
   int lcp_size = 0;
-  int pivots = 0;
-  int rounds = 0;             ///< LCP solves (candidate rounds) of the increment
+  int pivots = 0;                 ///< Lemke pivots (where the active-set method did not converge)
+  int active_set_iterations = 0;  ///< dense solves of the active-set method
+  int rounds = 0;                 ///< LCP solves (candidate rounds) of the increment
   double seconds = 0.0;
 };
 

@@ -11,30 +11,35 @@ namespace bimrock {
 
 double point_load_resultant(const Stage& stage) {
   Vec2 sum = Vec2::Zero();
-  for (const PointLoad& p : stage.loads.points) sum += p.force;
+  for (const PointLoad& p : stage.loads.points)
+    sum += p.force;
   return sum.norm();
 }
 
 void write_history_csv(const Model& model, const PlasticResult& result,
                        const std::filesystem::path& file) {
   std::ofstream out(file);
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  if (!out)
+    throw std::runtime_error("cannot write " + file.string());
   out << "stage,stage_name,increment,stage_factor,point_load_N";
-  for (const Monitor& m : model.monitors) out << ",ux_" << m.name << "_m,uy_" << m.name << "_m";
-  out << ",yielding_points,open_points,lcp_size,pivots,rounds,seconds\n";
+  for (const Monitor& m : model.monitors)
+    out << ",ux_" << m.name << "_m,uy_" << m.name << "_m";
+  out << ",yielding_points,open_points,lcp_size,active_set_iterations,pivots,rounds,seconds\n";
   for (const IncrementRecord& r : result.history) {
     const Stage& stage = model.stages[r.stage];
     out << fmt::format("{},{},{},{},{}", r.stage, stage.name, r.increment, r.stage_factor,
                        r.stage_factor * point_load_resultant(stage));
-    for (const Vec2& u : r.monitors) out << fmt::format(",{},{}", u.x(), u.y());
-    out << fmt::format(",{},{},{},{},{},{}\n", r.yielding_points, r.open_points, r.lcp_size,
-                       r.pivots, r.rounds, r.seconds);
+    for (const Vec2& u : r.monitors)
+      out << fmt::format(",{},{}", u.x(), u.y());
+    out << fmt::format(",{},{},{},{},{},{},{}\n", r.yielding_points, r.open_points, r.lcp_size,
+                       r.active_set_iterations, r.pivots, r.rounds, r.seconds);
   }
 }
 
 void write_history_plots(const Model& model, const PlasticResult& result,
                          const std::filesystem::path& folder) {
-  if (model.stages.empty() || model.monitors.empty()) return;
+  if (model.stages.empty() || model.monitors.empty())
+    return;
   const int last = static_cast<int>(model.stages.size()) - 1;
   const Stage& stage = model.stages[last];
   const double resultant = point_load_resultant(stage);
@@ -43,7 +48,8 @@ void write_history_plots(const Model& model, const PlasticResult& result,
   Vec2 along = Vec2::UnitX();
   if (resultant > 0.0) {
     Vec2 sum = Vec2::Zero();
-    for (const PointLoad& p : stage.loads.points) sum += p.force;
+    for (const PointLoad& p : stage.loads.points)
+      sum += p.force;
     along = sum / resultant;
   } else if (stage.control) {
     along = stage.control->direction;
@@ -51,7 +57,8 @@ void write_history_plots(const Model& model, const PlasticResult& result,
   for (std::size_t m = 0; m < model.monitors.size(); ++m) {
     PlotSeries s{model.monitors[m].name, {0.0}, {0.0}};
     for (const IncrementRecord& r : result.history) {
-      if (r.stage != last) continue;
+      if (r.stage != last)
+        continue;
       s.x.push_back(1e3 * r.monitors[m].dot(along));
       s.y.push_back(resultant > 0.0 ? 1e-3 * r.stage_factor * resultant : r.stage_factor);
     }
@@ -62,10 +69,11 @@ void write_history_plots(const Model& model, const PlasticResult& result,
         break;
       }
     }
-    LinePlot plot{fmt::format("{}: stage '{}'", model.title.empty() ? "bimrock" : model.title, stage.name),
-                  fmt::format("displacement of {} along the load [mm]", model.monitors[m].name),
-                  resultant > 0.0 ? "point load [kN]" : "stage load factor [-]",
-                  {s}};
+    LinePlot plot{
+        fmt::format("{}: stage '{}'", model.title.empty() ? "bimrock" : model.title, stage.name),
+        fmt::format("displacement of {} along the load [mm]", model.monitors[m].name),
+        resultant > 0.0 ? "point load [kN]" : "stage load factor [-]",
+        {s}};
     write_line_plot(plot, folder / ("plot_" + model.monitors[m].name));
   }
 }

@@ -1,0 +1,94 @@
+// The primal-dual active-set method. Expected solutions: a hand solution, the enumeration of
+// all complementary bases (an independent oracle for small problems, lcp_enumeration_test.cpp),
+// planted solutions, and Lemke on larger positive definite problems, whose solution is unique.
+// On problems without a solution it must never answer "solved".
+#include <gtest/gtest.h>
+
+#include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/lcp_enumeration.hpp>
+#include <bimrock/solve/lemke.hpp>
+
+#include "solve/random_lcp.hpp"
+
+namespace bimrock {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+TEST(ActiveSetLcp, TwoByTwoByHand) {
+  // [2 1; 1 2] z = (5, 6): z = (4/3, 7/3) (Cramer's rule), both rows active; with q = (-5, 6)
+  // only row 0 is: z = (5/2, 0), w_1 = 5/2 + 6 > 0.
+  ActiveSetLcp solver;
+  LcpResult r = solver.solve({MatrixXd{{2.0, 1.0}, {1.0, 2.0}}, VectorXd{{-5.0, -6.0}}});
+  ASSERT_EQ(r.status, LcpStatus::solved);
+  EXPECT_NEAR(r.z(0), 4.0 / 3.0, 1e-12);
+  EXPECT_NEAR(r.z(1), 7.0 / 3.0, 1e-12);
+  r = solver.solve({MatrixXd{{2.0, 1.0}, {1.0, 2.0}}, VectorXd{{-5.0, 6.0}}});
+  ASSERT_EQ(r.status, LcpStatus::solved);
+  EXPECT_NEAR(r.z(0), 2.5, 1e-12);
+  EXPECT_EQ(r.z(1), 0.0);
+}
+
+class ActiveSetVsOracle : public ::testing::TestWithParam<int> {};
+
+TEST_P(ActiveSetVsOracle, AgreesWithTheEnumerationOnPMatrices) {
+  std::mt19937 rng(static_cast<unsigned>(GetParam()));
+  const LcpProblem p{testing::random_p_matrix(10, rng), testing::random_vector(10, rng)};
+  const LcpResult oracle = LcpEnumeration().solve(p);
+  ASSERT_EQ(oracle.status, LcpStatus::solved);
+  const LcpResult r = ActiveSetLcp().solve(p);
+  if (r.status != LcpStatus::solved)
+    GTEST_SKIP() << "no convergence: the caller falls back to Lemke";
+  EXPECT_LE((r.z - oracle.z).cwiseAbs().maxCoeff(), 1e-9 * oracle.z.cwiseAbs().maxCoeff());
+}
+
+TEST_P(ActiveSetVsOracle, AgreesWithLemkeOnLargePositiveDefiniteProblems) {
+  std::mt19937 rng(static_cast<unsigned>(GetParam()));
+  const LcpProblem p{testing::random_spd(300, rng), testing::random_vector(300, rng)};
+  const LcpResult lemke = Lemke().solve(p);
+  ASSERT_EQ(lemke.status, LcpStatus::solved);
+  const LcpResult r = ActiveSetLcp().solve(p);
+  ASSERT_EQ(r.status, LcpStatus::solved) << to_string(r.status);
+  EXPECT_LE((r.z - lemke.z).cwiseAbs().maxCoeff(), 1e-9 * lemke.z.cwiseAbs().maxCoeff());
+  EXPECT_LT(r.steps, 20) << "Newton iterations";
+}
+
+INSTANTIATE_TEST_SUITE_P(Seeds, ActiveSetVsOracle, ::testing::Range(1, 11));
+
+TEST(ActiveSetLcp, PlantedSolutionIsFoundFromAWarmStart) {
+  std::mt19937 rng(7);
+  const Eigen::Index n = 200;
+  const MatrixXd m = testing::random_spd(n, rng);
+  VectorXd z_star = VectorXd::Zero(n), w_star = VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    (i % 3 == 0 ? z_star(i) : w_star(i)) = 1.0 + 0.01 * static_cast<double>(i);
+  const LcpProblem p{m, testing::planted_q(m, z_star, w_star)};
+  const LcpResult r = ActiveSetLcp().solve(p, &z_star);
+  ASSERT_EQ(r.status, LcpStatus::solved);
+  EXPECT_EQ(r.steps, 1) << "the right active set is confirmed by one solve";
+  EXPECT_LE((r.z - z_star).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+TEST(ActiveSetLcp, NeverClaimsASolutionThatDoesNotExist) {
+  // [1 -1; -1 1], q = (-1, -1): w_0 + w_1 = -2 for every z, no solution (Lemke finds the ray).
+  const LcpProblem p{MatrixXd{{1.0, -1.0}, {-1.0, 1.0}}, VectorXd{{-1.0, -1.0}}};
+  EXPECT_NE(ActiveSetLcp().solve(p).status, LcpStatus::solved);
+  EXPECT_EQ(Lemke().solve(p).status, LcpStatus::no_solution);
+  for (unsigned seed = 1; seed <= 20; ++seed) {  // rank-deficient PSD with infeasible q
+    std::mt19937 rng(seed);
+    const MatrixXd b = testing::random_matrix(8, 3, rng);
+    const LcpProblem q{b * b.transpose(), testing::random_vector(8, rng)};
+    const LcpResult oracle = LcpEnumeration().solve(q);
+    const LcpResult r = ActiveSetLcp().solve(q);
+    if (oracle.status == LcpStatus::no_solution) {
+      EXPECT_NE(r.status, LcpStatus::solved) << seed;
+    }
+    if (r.status == LcpStatus::solved) {
+      EXPECT_LE(r.residuals.worst_relative(), 1e-9) << seed;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace bimrock
