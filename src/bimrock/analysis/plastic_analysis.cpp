@@ -31,9 +31,10 @@ struct StageContext {
   const std::vector<YieldPoint>& points;
   const SparseCholesky& k;
   const Stage& stage;
-  Eigen::VectorXd x_ref;      // K^-1 P_stage: displacement of the whole stage load, elastic
-  Eigen::VectorXd control;    // displacement control: u_monitor . direction = control . U
-  double control_rate = 0.0;  // control . x_ref
+  Eigen::VectorXd x_ref;       // K^-1 P_stage: displacement of the whole stage load, elastic
+  Eigen::VectorXd control;     // displacement control: u_monitor . direction = control . U
+  double control_rate = 0.0;   // control . x_ref
+  Timings* timings = nullptr;  // phases of the increments: candidates, yield rows, LCP, check
 };
 
 struct Trial {
@@ -118,6 +119,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   const Model& model = ctx.model;
   const bool control = ctx.stage.control.has_value();
   Trial t;
+  LapTimer clock(ctx.timings);
   // predict_elastic: the increment if nothing yielded.
   const Eigen::VectorXd du_elastic = control
                                          ? Eigen::VectorXd((step / ctx.control_rate) * ctx.x_ref)
@@ -145,6 +147,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   std::vector<char> candidate(ctx.points.size(), 0);
   for (std::size_t p = 0; p < ctx.points.size(); ++p)
     candidate[p] = s.points[p].gap > 0.0 || predicted_f[p] > tol ? 1 : 0;
+  clock.lap("increments: candidates");
 
   for (t.rounds = 1; t.rounds <= opt.max_rounds; ++t.rounds) {
     std::vector<int> candidates;
@@ -152,6 +155,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       if (candidate[p])
         candidates.push_back(static_cast<int>(p));
     const YieldSystem sys = assemble_yield_system(model, ctx.points, s.points, s.u, candidates);
+    clock.lap("increments: yield rows");
     const int m = sys.size();
     t.lcp_size = m;
     // solve_lcp: nu = -f0 - C dU + N lambda with dU = dfactor x_ref + K^-1 Phi lambda.
@@ -175,6 +179,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       if (ctx.points[sys.rows[r].point].is_interface() && sys.rows[r].mode == kOpeningMode)
         gap_old(r) = s.points[sys.rows[r].point].gap;
     Eigen::VectorXd z = Eigen::VectorXd::Zero(m);
+    clock.lap("increments: LCP matrix");
     if (m > 0) {
       // solve_lcp: the active-set method first (a few dense solves, warm-started from the open
       // joints); Lemke where it does not converge, and it alone decides a collapse.
@@ -188,6 +193,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         r = solvers.lemke.solve(problem);
         t.pivots += r.steps;
       }
+      clock.lap("increments: LCP");
       if (r.status == LcpStatus::no_solution) {
         t.status = Trial::Status::collapse;
         t.rows = sys.rows;
@@ -238,6 +244,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     // check_all_yield_functions: add the violated points that were not in the LCP.
     std::vector<int> violators;
     check_all_yield_functions(ctx, t.next, tol, violators);
+    clock.lap("increments: update and check");
     bool added = false;
     for (int p : violators) {
       if (!candidate[p])
@@ -325,16 +332,13 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
   LcpSolvers solvers;
-  const auto increments_start = std::chrono::steady_clock::now();
-  auto time_increments = [&] {
-    result.timings.add(
-        "increments",
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - increments_start).count());
-  };
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
-    StageContext ctx{model, result.points, k, stage, {}, {}, 0.0};
-    ctx.x_ref = k.solve(assemble_loads(model, stage.loads));
+    StageContext ctx{model, result.points, k, stage, {}, {}, 0.0, &result.timings};
+    {
+      ScopedTimer t(result.timings, "stage loads");
+      ctx.x_ref = k.solve(assemble_loads(model, stage.loads));
+    }
     double step = 1.0 / stage.increments;
     if (stage.control) {
       const Monitor& m = model.monitors[stage.control->monitor];
@@ -414,11 +418,9 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
                                  "': the LCP of the increment at stage factor " +
                                  std::to_string(carried) + " could not be solved accurately");
       result.collapse = describe_collapse(st, carried, *proven, &failure, last ? &*last : nullptr);
-      time_increments();
       return result;
     }
   }
-  time_increments();
   return result;
 }
 

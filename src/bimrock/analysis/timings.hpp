@@ -21,7 +21,8 @@ struct Timings {
   }
   [[nodiscard]] double total() const {
     double t = 0.0;
-    for (const auto& p : phases) t += p.second;
+    for (const auto& p : phases)
+      t += p.second;
     return t;
   }
 };
@@ -32,7 +33,8 @@ class ScopedTimer {
   ScopedTimer(Timings& timings, std::string phase)
       : timings_(timings), phase_(std::move(phase)), start_(std::chrono::steady_clock::now()) {}
   ~ScopedTimer() {
-    timings_.add(phase_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+    timings_.add(phase_,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
   }
   ScopedTimer(const ScopedTimer&) = delete;
   ScopedTimer& operator=(const ScopedTimer&) = delete;
@@ -41,6 +43,25 @@ class ScopedTimer {
   Timings& timings_;
   std::string phase_;
   std::chrono::steady_clock::time_point start_;
+};
+
+/// Splits a stretch of code into consecutive phases: `lap("a")` charges the time since the
+/// previous lap (or construction) to phase "a". Null timings: does nothing.
+class LapTimer {
+ public:
+  explicit LapTimer(Timings* timings)
+      : timings_(timings), last_(std::chrono::steady_clock::now()) {}
+  void lap(const std::string& phase) {
+    if (!timings_)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    timings_->add(phase, std::chrono::duration<double>(now - last_).count());
+    last_ = now;
+  }
+
+ private:
+  Timings* timings_;
+  std::chrono::steady_clock::time_point last_;
 };
 
 }  // namespace bimrock
