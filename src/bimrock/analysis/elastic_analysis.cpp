@@ -6,8 +6,9 @@
 
 namespace bimrock {
 
-ElasticSolution solve_elastic(const Model& model) {
+ElasticSolution solve_elastic(const Model& model, bool track_memory) {
   ElasticSolution s;
+  s.timings.track_memory = track_memory;
   {
     ScopedTimer t(s.timings, "check supports");
     check_supports(model);
@@ -26,7 +27,8 @@ ElasticSolution solve_elastic(const Model& model) {
   }
   {
     ScopedTimer t(s.timings, "factorize");
-    if (!cholesky.factorize(k)) report_singular_stiffness(model, cholesky.failed_column());
+    if (!cholesky.factorize(k))
+      report_singular_stiffness(model, cholesky.failed_column());
   }
   s.factor_nonzeros = cholesky.factor_nonzeros();
   {
@@ -43,7 +45,8 @@ ElasticSolution solve_elastic(const Model& model) {
 void evaluate_fields(const Model& model, ElasticSolution& s, const PlasticParts& plastic) {
   s.blocks.clear();
   s.blocks.reserve(model.blocks.size());
-  for (int k = 0; k < model.n_blocks(); ++k) s.blocks.push_back(block_state(model, k, s.u, plastic));
+  for (int k = 0; k < model.n_blocks(); ++k)
+    s.blocks.push_back(block_state(model, k, s.u, plastic));
   s.interfaces.clear();
   s.interfaces.reserve(model.interfaces.size());
   for (int k = 0; k < model.n_interfaces(); ++k)

@@ -30,11 +30,13 @@ InterfaceState interface_state(const Model& model, int interface, const Eigen::V
   for (std::size_t k = 0; k < 2; ++k) {
     const Vec2& p = points[k].point;
     Vec2 jump = -displacement_at(model, f.block_i, p, u);
-    if (!f.is_support()) jump += displacement_at(model, f.block_j, p, u);
+    if (!f.is_support())
+      jump += displacement_at(model, f.block_j, p, u);
     state[k].point = p;
     state[k].delta = t * jump;
     if (plastic.index && plastic.index->interface_points[interface][k] >= 0)
-      state[k].plastic = (*plastic.states)[plastic.index->interface_points[interface][k]].plastic.head<2>();
+      state[k].plastic =
+          (*plastic.states)[plastic.index->interface_points[interface][k]].plastic.head<2>();
     const Eigen::Vector2d elastic = state[k].delta - state[k].plastic;
     state[k].stress = {f.normal_stiffness * elastic(0), f.shear_stiffness * elastic(1)};
   }
@@ -43,7 +45,8 @@ InterfaceState interface_state(const Model& model, int interface, const Eigen::V
 
 double total_area(const Model& model) {
   double a = 0.0;
-  for (const Block& b : model.blocks) a += b.area;
+  for (const Block& b : model.blocks)
+    a += b.area;
   return a;
 }
 
@@ -53,7 +56,8 @@ Eigen::Vector3d mean_strain(const Model& model, const Eigen::VectorXd& u) {
     const Vec2& n = e.outward_normal;
     for (const IntegrationPoint& ip : integration_points(e.segment, Integration::gauss)) {
       const Vec2 d = displacement_at(model, e.polygon, ip.point, u);
-      sum += ip.weight * Eigen::Vector3d(d.x() * n.x(), d.y() * n.y(), d.x() * n.y() + d.y() * n.x());
+      sum +=
+          ip.weight * Eigen::Vector3d(d.x() * n.x(), d.y() * n.y(), d.x() * n.y() + d.y() * n.x());
     }
   }
   return sum / total_area(model);

@@ -13,9 +13,10 @@
 namespace bimrock {
 
 struct BlockState {
-  Vec6 d;                   ///< [u0, v0, theta, eps_x, eps_y, gamma_xy]
-  Eigen::Vector3d strain;   ///< [eps_x, eps_y, gamma_xy]
-  Eigen::Vector3d stress;   ///< [sigma_x, sigma_y, tau_xy] = D_b (strain - plastic) [Pa], tension positive
+  Vec6 d;                  ///< [u0, v0, theta, eps_x, eps_y, gamma_xy]
+  Eigen::Vector3d strain;  ///< [eps_x, eps_y, gamma_xy]
+  Eigen::Vector3d
+      stress;  ///< [sigma_x, sigma_y, tau_xy] = D_b (strain - plastic) [Pa], tension positive
   Eigen::Vector3d plastic = Eigen::Vector3d::Zero();  ///< plastic strain
 };
 

@@ -312,6 +312,7 @@ Collapse describe_collapse(int stage, double carried, double failed, const Trial
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt,
                                    const IncrementCallback& on_increment) {
   PlasticResult result;
+  result.timings.track_memory = opt.track_memory;
   {
     ScopedTimer t(result.timings, "check supports");
     check_supports(model);

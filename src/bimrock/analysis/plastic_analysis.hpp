@@ -23,6 +23,8 @@ struct PlasticOptions {
   /// Solve each LCP by the primal-dual active-set method first, Lemke only where it fails
   /// (false: Lemke always; the answers agree, only the time differs).
   bool active_set = true;
+  /// Record each phase's peak resident memory in the timings (benchmarks).
+  bool track_memory = false;
 };
 
 /// The state the analysis carries from increment to increment.

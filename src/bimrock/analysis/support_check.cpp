@@ -13,7 +13,8 @@ struct UnionFind {
   std::vector<int> parent;
   explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
   int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    while (parent[x] != x)
+      x = parent[x] = parent[parent[x]];
     return x;
   }
   void unite(int a, int b) { parent[find(a)] = find(b); }
@@ -37,11 +38,14 @@ std::string name_blocks(const Model& model, const std::vector<int>& blocks) {
   const std::size_t shown = std::min<std::size_t>(blocks.size(), 5);
   for (std::size_t k = 0; k < shown; ++k) {
     const Block& b = model.blocks[blocks[k]];
-    if (k > 0) s += (k + 1 == shown && shown == blocks.size()) ? " and " : ", ";
+    if (k > 0)
+      s += (k + 1 == shown && shown == blocks.size()) ? " and " : ", ";
     s += b.source.item.empty() ? "block " + std::to_string(blocks[k]) : b.source.item;
-    if (b.source.line > 0) s += " (line " + std::to_string(b.source.line) + ")";
+    if (b.source.line > 0)
+      s += " (line " + std::to_string(b.source.line) + ")";
   }
-  if (blocks.size() > shown) s += " and " + std::to_string(blocks.size() - shown) + " more";
+  if (blocks.size() > shown)
+    s += " and " + std::to_string(blocks.size() - shown) + " more";
   return s;
 }
 
@@ -49,14 +53,16 @@ void check_supports(const Model& model) {
   const int n = model.n_blocks();
   UnionFind groups(n);
   for (const Interface& f : model.interfaces) {
-    if (!f.is_support() && f.normal_stiffness > 0.0) groups.unite(f.block_i, f.block_j);
+    if (!f.is_support() && f.normal_stiffness > 0.0)
+      groups.unite(f.block_i, f.block_j);
   }
   // Support stiffness seen by the rigid motions of each group, about the group's first block.
   std::vector<Eigen::Matrix3d> held(n, Eigen::Matrix3d::Zero());
   std::vector<double> scale(n, 0.0);
   const double t = model.settings.thickness;
   for (const Interface& f : model.interfaces) {
-    if (!f.is_support()) continue;
+    if (!f.is_support())
+      continue;
     const int g = groups.find(f.block_i);
     const Vec2& c = model.blocks[f.block_i].centroid;
     const Eigen::Matrix<double, 6, 3> r = rigid_modes(c, model.blocks[g].centroid);
@@ -64,9 +70,11 @@ void check_supports(const Model& model) {
     scale[g] = std::max(scale[g], f.normal_stiffness * f.segment.length() * t);
   }
   std::vector<std::vector<int>> members(n);
-  for (int k = 0; k < n; ++k) members[groups.find(k)].push_back(k);
+  for (int k = 0; k < n; ++k)
+    members[groups.find(k)].push_back(k);
   for (int g = 0; g < n; ++g) {
-    if (members[g].empty()) continue;
+    if (members[g].empty())
+      continue;
     bool free = scale[g] == 0.0;
     if (!free) {
       // Make the rotation column commensurate with translations by the group's size.

@@ -1,14 +1,23 @@
 #pragma once
 /// @file Wall-clock time per named phase of an analysis.
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <bimrock/analysis/memory_probe.hpp>
 
 namespace bimrock {
 
 struct Timings {
   std::vector<std::pair<std::string, double>> phases;  ///< (phase, seconds), in order
+  /// When set, ScopedTimer also records each phase's peak resident memory (bytes) here; off by
+  /// default (resetting the peak costs a walk of the page tables).
+  bool track_memory = false;
+  std::map<std::string, std::int64_t> peak_bytes;
 
   void add(const std::string& phase, double seconds) {
     for (auto& [name, s] : phases) {
@@ -30,11 +39,18 @@ struct Timings {
 /// Times a scope: `{ ScopedTimer t(timings, "assemble"); ... }`.
 class ScopedTimer {
  public:
-  ScopedTimer(Timings& timings, std::string phase)
-      : timings_(timings), phase_(std::move(phase)), start_(std::chrono::steady_clock::now()) {}
+  ScopedTimer(Timings& timings, std::string phase) : timings_(timings), phase_(std::move(phase)) {
+    if (timings_.track_memory)
+      reset_peak_memory();
+    start_ = std::chrono::steady_clock::now();
+  }
   ~ScopedTimer() {
     timings_.add(phase_,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+    if (timings_.track_memory) {
+      std::int64_t& peak = timings_.peak_bytes[phase_];
+      peak = std::max(peak, peak_memory_bytes());
+    }
   }
   ScopedTimer(const ScopedTimer&) = delete;
   ScopedTimer& operator=(const ScopedTimer&) = delete;

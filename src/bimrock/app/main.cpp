@@ -14,6 +14,7 @@
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/io/results_writer.hpp>
 
+#include "bimrock/app/bench_command.hpp"
 #include "bimrock/app/report.hpp"
 
 namespace {
@@ -74,12 +75,33 @@ int main(int argc, char** argv) {
   CLI::App* check_cmd = app.add_subcommand("check", "read and check a case without solving it");
   check_cmd->add_option("case", case_file, "case file (YAML)")->required();
 
+  bimrock::BenchOptions bench;
+  CLI::App* bench_cmd = app.add_subcommand(
+      "bench",
+      "time whole analyses of generated models against CHOLMOD alone (docs/performance.md)");
+  bench_cmd->add_option("--models", bench.models, "elastic, plastic")->delimiter(',');
+  bench_cmd->add_option("--elastic-sizes", bench.elastic_sizes, "blocks of the elastic brick mass")
+      ->delimiter(',');
+  bench_cmd
+      ->add_option("--plastic-sizes", bench.plastic_sizes, "blocks of the plastic footing model")
+      ->delimiter(',');
+  bench_cmd
+      ->add_option("--repetitions", bench.repetitions, "runs per size (the median is reported)")
+      ->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--increments", bench.increments, "increments of the footing stage")
+      ->check(CLI::PositiveNumber);
+  bench_cmd->add_option("--json", bench.json, "also write the table as JSON to this file");
+  bench_cmd->add_option("--plot", bench.plot,
+                        "write bench_time and bench_memory plots (PNG, SVG) to this folder");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (*run_cmd)
       return run(case_file, output, quiet);
     if (*check_cmd)
       return check(case_file, quiet);
+    if (*bench_cmd)
+      return bimrock::run_bench(bench);
   } catch (const bimrock::InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kInputError;

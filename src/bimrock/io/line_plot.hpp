@@ -17,6 +17,9 @@ struct LinePlot {
   std::string x_label;
   std::string y_label;
   std::vector<PlotSeries> series;
+  /// Logarithmic axes (decades); values <= 0 are left out.
+  bool log_x = false;
+  bool log_y = false;
 };
 
 /// Writes `<stem>.png` and `<stem>.svg`.

@@ -1,0 +1,37 @@
+#include <bimrock/analysis/memory_probe.hpp>
+
+#include <fstream>
+#include <string>
+
+namespace bimrock {
+
+namespace {
+
+// A "Key:   123 kB" line of /proc/self/status, in bytes.
+std::int64_t status_field(const std::string& key) {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind(key + ":", 0) == 0)
+      return std::stoll(line.substr(key.size() + 1)) * 1024;
+  }
+  return -1;
+}
+
+}  // namespace
+
+void reset_peak_memory() {
+  std::ofstream clear("/proc/self/clear_refs");
+  if (clear)
+    clear << "5";
+}
+
+std::int64_t peak_memory_bytes() {
+  return status_field("VmHWM");
+}
+
+std::int64_t current_memory_bytes() {
+  return status_field("VmRSS");
+}
+
+}  // namespace bimrock

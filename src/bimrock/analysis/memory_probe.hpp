@@ -1,0 +1,18 @@
+#pragma once
+/// @file Peak resident memory of this process, per phase (Linux: /proc/self). Writing "5" to
+/// /proc/self/clear_refs resets the high-water mark VmHWM, so a phase's peak is VmHWM read at
+/// its end after a reset at its start. Elsewhere, or without permission, the probe reads -1.
+#include <cstdint>
+
+namespace bimrock {
+
+/// Resets the peak (high-water mark) of the resident set to the current resident set.
+void reset_peak_memory();
+
+/// The peak resident set since the last reset (or the start of the process) [bytes], or -1.
+[[nodiscard]] std::int64_t peak_memory_bytes();
+
+/// The current resident set [bytes], or -1.
+[[nodiscard]] std::int64_t current_memory_bytes();
+
+}  // namespace bimrock

@@ -1,0 +1,303 @@
+#include "bimrock/app/bench_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <thread>
+
+#include <unistd.h>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <bimrock/analysis/elastic_analysis.hpp>
+#include <bimrock/analysis/memory_probe.hpp>
+#include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/assembly/global_system.hpp>
+#include <bimrock/io/line_plot.hpp>
+#include <bimrock/io/results_writer.hpp>
+#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/solve/sparse_cholesky.hpp>
+
+namespace bimrock {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/// One run of one model: seconds and peak bytes per phase, in order, plus sizes.
+struct Run {
+  std::vector<std::pair<std::string, double>> seconds;
+  std::map<std::string, double> peak_bytes;
+  double limit_seconds = 0.0;  ///< analyze + factorize + one solve of the same K, alone
+  double limit_peak_bytes = 0.0;
+  double run_peak_bytes = 0.0;  ///< whole analysis, results not written
+  int blocks = 0, interfaces = 0, unknowns = 0, yield_points = 0, lcp_rows_max = 0, increments = 0;
+  bool collapsed = false;
+};
+
+void add(Run& run, const std::string& phase, double s, double peak = -1) {
+  run.seconds.emplace_back(phase, s);
+  if (peak >= 0)
+    run.peak_bytes[phase] = peak;
+}
+
+void add_timings(Run& run, const Timings& t) {
+  for (const auto& [phase, s] : t.phases) {
+    const auto peak = t.peak_bytes.find(phase);
+    add(run, phase, s, peak == t.peak_bytes.end() ? -1.0 : static_cast<double>(peak->second));
+  }
+}
+
+// The physical limit: CHOLMOD alone on the model's K (assembled outside the clock).
+// Its memory counts K too: the peak over the resident set before K was assembled.
+void measure_limit(const Model& model, Run& run) {
+  const double before = static_cast<double>(current_memory_bytes());
+  reset_peak_memory();
+  const SparseMatrix k = assemble_stiffness_lower(model);
+  const Eigen::VectorXd p = Eigen::VectorXd::Ones(model.n_dofs());
+  const auto start = Clock::now();
+  SparseCholesky cholesky;
+  cholesky.analyze(k, 6);
+  if (!cholesky.factorize(k))
+    throw std::runtime_error("bench: K is not positive definite");
+  const Eigen::VectorXd u = cholesky.solve(p);
+  run.limit_seconds = seconds_since(start);
+  run.limit_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
+  if (!u.allFinite())
+    throw std::runtime_error("bench: the solve failed");
+}
+
+Run run_elastic(int n, const fs::path& scratch) {
+  Run run;
+  const CaseSpec spec = brick_mass_case(n);
+  std::vector<Polygon> polygons;
+  for (const BlockSpec& b : spec.blocks)
+    polygons.push_back(b.polygon);
+  const double before = static_cast<double>(current_memory_bytes());
+  reset_peak_memory();
+  auto start = Clock::now();
+  const Model model = build_model(spec);
+  add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
+  start = Clock::now();
+  const std::vector<SharedEdge> edges = find_shared_edges(polygons, model.tolerance);
+  add(run, "(of which interface detection)", seconds_since(start));
+  const ElasticSolution s = solve_elastic(model, true);
+  run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
+  add_timings(run, s.timings);
+  start = Clock::now();
+  write_elastic_results(model, s, {}, scratch / "elastic");
+  add(run, "write results", seconds_since(start));
+  run.blocks = model.n_blocks();
+  run.unknowns = model.n_dofs();
+  run.interfaces = model.n_interfaces();
+  measure_limit(model, run);
+  return run;
+}
+
+Run run_plastic(int n, int increments, const fs::path& scratch) {
+  Run run;
+  const double before = static_cast<double>(current_memory_bytes());
+  reset_peak_memory();
+  auto start = Clock::now();
+  // Loaded to 1.25 times the shear at which the top row would slide: collapse within the stage.
+  const Model model = build_model(wall_case(n, increments, 1.25 * wall_collapse_shear()));
+  add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
+  PlasticOptions options;
+  options.track_memory = true;
+  double writing = 0.0;
+  PlasticResult result;
+  {
+    PlasticResultsWriter writer(model, {}, scratch / "plastic");
+    result = run_plastic_analysis(model, options,
+                                  [&](const IncrementRecord& r, const AnalysisState& st) {
+                                    const auto w = Clock::now();
+                                    writer.on_increment(r, st);
+                                    writing += seconds_since(w);
+                                  });
+    run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
+    start = Clock::now();
+    (void)writer.finish(result);
+    writing += seconds_since(start);
+  }
+  add_timings(run, result.timings);
+  add(run, "write results", writing);
+  run.blocks = model.n_blocks();
+  run.unknowns = model.n_dofs();
+  run.interfaces = model.n_interfaces();
+  run.yield_points = static_cast<int>(result.points.size());
+  run.increments = static_cast<int>(result.history.size());
+  for (const IncrementRecord& h : result.history)
+    run.lcp_rows_max = std::max(run.lcp_rows_max, h.lcp_size);
+  run.collapsed = result.collapse.has_value();
+  measure_limit(model, run);
+  return run;
+}
+
+double total_without_writing(const Run& r) {
+  double t = 0.0;
+  for (const auto& [phase, s] : r.seconds)
+    if (phase != "write results" && phase.front() != '(')
+      t += s;
+  return t;
+}
+
+struct Row {
+  std::string model;
+  Run first;  // sizes and counts
+  std::vector<std::pair<std::string, double>> median_seconds;
+  std::map<std::string, double> peak_bytes;  // the largest over the repetitions
+  double total = 0.0, limit = 0.0, run_peak = 0.0, limit_peak = 0.0;
+};
+
+Row summarize(const std::string& model, const std::vector<Run>& runs) {
+  Row row{model, runs.front(), {}, {}, 0, 0, 0, 0};
+  for (const auto& [phase, s0] : runs.front().seconds) {
+    std::vector<double> v;
+    for (const Run& r : runs)
+      for (const auto& [p, s] : r.seconds)
+        if (p == phase)
+          v.push_back(s);
+    row.median_seconds.emplace_back(phase, median(v));
+  }
+  std::vector<double> totals, limits;
+  for (const Run& r : runs) {
+    totals.push_back(total_without_writing(r));
+    limits.push_back(r.limit_seconds);
+    row.run_peak = std::max(row.run_peak, r.run_peak_bytes);
+    row.limit_peak = std::max(row.limit_peak, r.limit_peak_bytes);
+    for (const auto& [p, b] : r.peak_bytes)
+      row.peak_bytes[p] = std::max(row.peak_bytes[p], b);
+  }
+  row.total = median(totals);
+  row.limit = median(limits);
+  return row;
+}
+
+double mib(double bytes) {
+  return bytes / (1024.0 * 1024.0);
+}
+
+void print_row(const Row& r) {
+  fmt::print("\n{} model, {} blocks, {} interfaces, {} unknowns", r.model, r.first.blocks,
+             r.first.interfaces, r.first.unknowns);
+  if (r.model == "plastic")
+    fmt::print(", {} yield points, {} increments, largest LCP {} rows{}", r.first.yield_points,
+               r.first.increments, r.first.lcp_rows_max, r.first.collapsed ? ", collapsed" : "");
+  fmt::print("\n  {:<34} {:>10} {:>10}\n", "phase", "median s", "RSS peak");
+  for (const auto& [phase, s] : r.median_seconds) {
+    const auto peak = r.peak_bytes.find(phase);
+    fmt::print(
+        "  {:<34} {:>10.3f} {:>10}\n", phase, s,
+        peak == r.peak_bytes.end() ? std::string("-") : fmt::format("{:.0f}", mib(peak->second)));
+  }
+  fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "whole analysis (without writing)", r.total,
+             mib(r.run_peak));
+  fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "physical limit (K + CHOLMOD alone)", r.limit,
+             mib(r.limit_peak));
+  fmt::print("  (RSS peak: the process's resident set in MiB; the last two rows: its growth)\n");
+  fmt::print("  ratio to the limit: time {:.2f}, memory {:.2f}\n", r.total / r.limit,
+             r.run_peak / r.limit_peak);
+}
+
+nlohmann::json to_json(const Row& r) {
+  nlohmann::json phases = nlohmann::json::array();
+  for (const auto& [phase, s] : r.median_seconds) {
+    nlohmann::json p = {{"phase", phase}, {"median_seconds", s}};
+    if (const auto peak = r.peak_bytes.find(phase); peak != r.peak_bytes.end())
+      p["peak_bytes"] = peak->second;
+    phases.push_back(p);
+  }
+  return {{"model", r.model},
+          {"blocks", r.first.blocks},
+          {"interfaces", r.first.interfaces},
+          {"unknowns", r.first.unknowns},
+          {"yield_points", r.first.yield_points},
+          {"increments", r.first.increments},
+          {"lcp_rows_max", r.first.lcp_rows_max},
+          {"collapsed", r.first.collapsed},
+          {"phases", phases},
+          {"whole_seconds", r.total},
+          {"limit_seconds", r.limit},
+          {"time_ratio", r.total / r.limit},
+          {"whole_peak_bytes", r.run_peak},
+          {"limit_peak_bytes", r.limit_peak},
+          {"memory_ratio", r.run_peak / r.limit_peak}};
+}
+
+void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
+  fs::create_directories(folder);
+  LinePlot time{
+      "bimrock bench: time of a whole analysis", "blocks", "seconds (median)", {}, true, true};
+  LinePlot memory{"bimrock bench: peak memory", "blocks", "MiB", {}, true, true};
+  for (const std::string model : {"elastic", "plastic"}) {
+    PlotSeries t{model + " analysis", {}, {}}, l{model + ": CHOLMOD alone", {}, {}};
+    PlotSeries m{model + " analysis", {}, {}}, ml{model + ": CHOLMOD alone", {}, {}};
+    for (const Row& r : rows) {
+      if (r.model != model)
+        continue;
+      for (PlotSeries* s : {&t, &l, &m, &ml})
+        s->x.push_back(r.first.blocks);
+      t.y.push_back(r.total);
+      l.y.push_back(r.limit);
+      m.y.push_back(mib(r.run_peak));
+      ml.y.push_back(mib(r.limit_peak));
+    }
+    if (t.x.empty())
+      continue;
+    time.series.insert(time.series.end(), {t, l});
+    memory.series.insert(memory.series.end(), {m, ml});
+  }
+  write_line_plot(time, folder / "bench_time");
+  write_line_plot(memory, folder / "bench_memory");
+}
+
+}  // namespace
+
+int run_bench(const BenchOptions& options) {
+  const fs::path scratch = fs::temp_directory_path() / fmt::format("bimrock-bench-{}", ::getpid());
+  fs::create_directories(scratch);
+  fmt::print("bimrock bench: {} hardware threads, {} repetitions, medians; SI units\n",
+             std::thread::hardware_concurrency(), options.repetitions);
+  std::vector<Row> rows;
+  for (const std::string& model : options.models) {
+    const std::vector<int>& sizes =
+        model == "elastic" ? options.elastic_sizes : options.plastic_sizes;
+    for (int n : sizes) {
+      std::vector<Run> runs;
+      for (int rep = 0; rep < options.repetitions; ++rep)
+        runs.push_back(model == "elastic" ? run_elastic(n, scratch)
+                                          : run_plastic(n, options.increments, scratch));
+      rows.push_back(summarize(model, runs));
+      print_row(rows.back());
+      std::fflush(stdout);
+    }
+  }
+  fs::remove_all(scratch);
+  if (!options.json.empty()) {
+    nlohmann::json j = {{"hardware_threads", std::thread::hardware_concurrency()},
+                        {"repetitions", options.repetitions},
+                        {"rows", nlohmann::json::array()}};
+    for (const Row& r : rows)
+      j["rows"].push_back(to_json(r));
+    std::ofstream(options.json) << j.dump(2) << '\n';
+  }
+  if (!options.plot.empty())
+    write_plots(rows, options.plot);
+  return 0;
+}
+
+}  // namespace bimrock

@@ -1,0 +1,23 @@
+#pragma once
+// `bimrock bench`: whole analyses of generated models (model/reference_cases.hpp) at several
+// sizes, each phase timed (median of the repetitions) with its peak memory, beside the physical
+// limit measured in the same run: CHOLMOD analyze + factorize + one solve of the same K alone.
+#include <string>
+#include <vector>
+
+namespace bimrock {
+
+struct BenchOptions {
+  std::vector<std::string> models = {"elastic", "plastic"};
+  std::vector<int> elastic_sizes = {1000, 10000, 100000};
+  std::vector<int> plastic_sizes = {100, 1000};
+  int repetitions = 3;
+  int increments = 25;  ///< of the plastic model's loading stage
+  std::string json;     ///< write the table as JSON here too ("" : no)
+  std::string plot;     ///< write bench_time.png/svg and bench_memory.png/svg here ("" : no)
+};
+
+/// Runs the benchmark, prints the table; returns the process exit code.
+int run_bench(const BenchOptions& options);
+
+}  // namespace bimrock

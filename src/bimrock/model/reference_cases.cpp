@@ -1,0 +1,104 @@
+#include <bimrock/model/reference_cases.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <bimrock/geometry/brick_pattern.hpp>
+
+namespace bimrock {
+
+namespace {
+
+BlockMaterial granite() {
+  BlockMaterial rock;
+  rock.name = "rock";
+  rock.young = 89e9;
+  rock.poisson = 0.26;
+  rock.unit_weight = 26e3;
+  rock.source.item = "materials.rock";
+  return rock;
+}
+
+JointMaterial example1_joint() {
+  JointMaterial joint;
+  joint.name = "joint";
+  joint.normal_stiffness = 531.9e9;
+  joint.shear_stiffness = 438.8e9;
+  joint.source.item = "joint_materials.joint";
+  return joint;
+}
+
+Selector line(Vec2 a, Vec2 b, const std::string& item) {
+  Selector s;
+  s.kind = Selector::Kind::line;
+  s.line = {a, b};
+  s.source.item = item;
+  return s;
+}
+
+void add_blocks(CaseSpec& c, const std::vector<Polygon>& polygons) {
+  for (std::size_t k = 0; k < polygons.size(); ++k)
+    c.blocks.push_back({polygons[k], "rock", {0, "blocks[" + std::to_string(k) + "]"}});
+}
+
+}  // namespace
+
+CaseSpec brick_mass_case(int n_blocks) {
+  const int side = std::max(2, static_cast<int>(std::lround(std::sqrt(double(n_blocks)))));
+  const double size = 0.2;
+  CaseSpec c;
+  c.file = "brick_mass(" + std::to_string(n_blocks) + ")";
+  c.block_materials = {granite()};
+  c.joint_materials = {example1_joint()};
+  add_blocks(c, brick_pattern(side, side, size, size, Stagger::rows));
+  c.default_joint = "joint";
+  c.supports.push_back(
+      {line({0, 0}, {side * size, 0}, "base"), SupportKind::fixed, std::nullopt, {0, "base"}});
+  c.loads.gravity = Vec2(0, -1);
+  return c;
+}
+
+namespace {
+constexpr double kWallCohesion = 50e3;
+constexpr double kWallFriction = 35.0 * M_PI / 180.0;
+constexpr double kBrickHeight = 0.2;
+}  // namespace
+
+double wall_collapse_shear() {
+  return kWallCohesion + 26e3 * kBrickHeight * std::tan(kWallFriction);
+}
+
+CaseSpec wall_case(int n_blocks, int increments, double shear) {
+  const double bw = 0.4, bh = kBrickHeight;
+  const int ny = std::max(2, static_cast<int>(std::lround(std::sqrt(n_blocks / 2.0))));
+  const int nx = 2 * ny;  // 0.8 m of width per row: four times as wide as high
+  const double width = nx * bw, height = ny * bh;
+  CaseSpec c;
+  c.file = "wall(" + std::to_string(n_blocks) + ")";
+  c.block_materials = {granite()};
+  JointMaterial joint = example1_joint();
+  JointStrength s;
+  s.cohesion = Softening::constant(kWallCohesion);
+  s.friction = Softening::constant(std::tan(kWallFriction));
+  s.dilation = std::tan(kWallFriction);
+  s.tensile = Softening::constant(50e3);
+  joint.strength = s;
+  c.joint_materials = {joint};
+  add_blocks(c, brick_pattern(nx, ny, bw, bh, Stagger::rows));
+  c.default_joint = "joint";
+  c.supports.push_back(
+      {line({0, 0}, {width, 0}, "base"), SupportKind::fixed, std::nullopt, {0, "base"}});
+  c.monitors.push_back({"top", Vec2(width, height), {0, "monitors[0]"}});
+  StageSpec gravity{"gravity", {}, 1, std::nullopt, {0, "stages[0]"}};
+  gravity.loads.gravity = Vec2(0, -1);
+  StageSpec push{"push", {}, increments, std::nullopt, {0, "stages[1]"}};
+  // On the top edge (outward normal +y) the tangent s = (-n_y, n_x) = (-1, 0): a negative shear
+  // pushes in +x.
+  push.loads.tractions.push_back(
+      {line({0, height}, {width, height}, "top"), 0.0, -shear, {0, "top"}});
+  c.stages = {gravity, push};
+  return c;
+}
+
+}  // namespace bimrock

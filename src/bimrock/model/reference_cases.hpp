@@ -1,0 +1,23 @@
+#pragma once
+/// @file Generated cases of any size, for benchmarks (`bimrock bench`, bench/) and scaling
+/// studies. Units SI. The rock and joints are those of the paper's example 1.
+#include <bimrock/model/case_spec.hpp>
+
+namespace bimrock {
+
+/// A square brick-pattern mass of about n_blocks blocks of 0.2 m x 0.2 m (rows staggered) on a
+/// fixed base, under gravity: an elastic analysis (loads, no stages).
+CaseSpec brick_mass_case(int n_blocks);
+
+/// A jointed wall pushed sideways to collapse: bricks 0.4 m x 0.2 m in staggered rows, about
+/// n_blocks of them, the wall four times as wide as high, on a fixed base, sides free; joints
+/// with cohesion 50 kPa, friction 35 deg, associated flow, tensile strength 50 kPa. Stage 1:
+/// gravity. Stage 2: a uniform shear traction on the top edge raised to `shear` [Pa] in
+/// `increments` equal steps. The top row slides first, at the closed form of wall_collapse_shear().
+CaseSpec wall_case(int n_blocks, int increments, double shear);
+
+/// The shear traction at which the top row of wall_case() slides on its bed joint:
+/// tau W = c W + (unit weight x row height x W) tan(phi).
+double wall_collapse_shear();
+
+}  // namespace bimrock

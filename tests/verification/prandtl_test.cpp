@@ -1,0 +1,273 @@
+// Verification: Prandtl's strip footing on a mass of many small blocks (issue 3).
+//
+// Source of the expected number: a smooth strip footing on a weightless half-space of Tresca
+// material (undrained strength c) fails at the mean pressure q_u = (2 + pi) c = 5.1416 c
+// (L. Prandtl 1920, "Ueber die Haerte plastischer Koerper", Nachrichten der Gesellschaft der
+// Wissenschaften zu Goettingen, Math.-phys. Klasse, 74-85; exact: statically and kinematically
+// admissible fields give the same load, W.F. Chen 1975, "Limit analysis and soil plasticity",
+// chapter 5). The pressure may be uniform (a flexible footing) as here.
+//
+// Model: half of the problem by symmetry. The footing half-width b = B/2 = 1 m loads the top
+// x in [0, b] by a uniform pressure; the soil [0, ~3.5 b] x [-~1.5 b, 0] rests on a roller on the
+// symmetry line x = 0 and on the far side, and on a fixed base. Prandtl's mechanism reaches
+// x = 3 b and depth sqrt(2) b, so it fits (the limit load of a perfectly plastic body does not
+// depend on the elastic field outside its mechanism). The blocks are "crossed triangles"
+// (tests/support/footing_mesh.hpp) of cell size h = b / n, n = 1, 2, ... (B/h = 2 n). Weightless,
+// plane strain, E = 1000 c, nu = 0.3. The centre of the footing is pushed down under
+// displacement control (the pressure is the stage factor times c) and the collapse pressure is
+// the largest pressure carried: the load-displacement curve of a perfectly plastic body rises
+// to a plateau at the limit load.
+//
+// What each variant converges to (and why only two of them can be asked for 5%):
+//  - blocks only (Tresca blocks, penalty interfaces that never yield): the blocks with penalty
+//    interfaces are constant strain triangles, which in the crossed pattern carry isochoric
+//    flow without locking, so the collapse pressure falls towards Prandtl's from above as h
+//    shrinks. Its limit is that of the 24-plane polygon inscribed in the Tresca circle, between
+//    cos(pi/24) = 0.991 and 1 times (2 + pi) c.
+//  - both (Tresca blocks and cohesive interfaces): the interfaces add slip lines along the four
+//    directions of the mesh, so the mass can only be weaker than with blocks only on the same
+//    mesh, and is closer to Prandtl's load.
+//  - interfaces only (elastic blocks, Tresca-like joints: cohesion c, friction 0, a tensile
+//    strength of 1000 c so they never open): rigid blocks that slip along straight joints
+//    without opening cannot rotate relative to each other, so a mechanism is blocks translating
+//    with jumps along the joints, and a crossed-triangle mesh offers four directions. In the
+//    limit of small blocks that is a material with a square yield criterion
+//    |s_x - s_y| / 2 <= c, |tau_xy| <= c circumscribing the Tresca circle, whose strip footing
+//    load lies above (2 + pi) c (roughly 5.5 c: the fan of Prandtl's mechanism shears the mass
+//    in every direction, where the square is up to sqrt(2) stronger). No refinement of this mesh
+//    reaches 5%: more joint directions would be needed. With B/h = 2 the best mechanism on the
+//    mesh is the wedge mechanism of 45 degree slip lines, q = 6 c exactly; the test asserts that
+//    (B/h = 4 has carried 6 c too, with an earlier build of the solver).
+//
+// Known solver limits (see the DISABLED_ tests at the end): on the interfaces-only meshes
+// B/h >= 4 the LCPs of the plateau are PSD with hundreds of near-zero eigenvalues; Lemke used to
+// end on secondary rays that were no certificates (collapse reported too early, even below
+// (2 + pi) c, which the upper bound theorem forbids). Rays are now checked, so those runs stop
+// with "could not be solved accurately" instead (measured: B/h = 4, 6, 8 stop at 5.75, 5.66,
+// 5.24 c), and displacement control may stop the same way once the plateau is reached. The
+// pressures carried up to there are checked solutions, so the test keeps the largest of them.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <bimrock/analysis/plastic_analysis.hpp>
+
+#include "support/cases.hpp"
+#include "support/footing_mesh.hpp"
+
+// The sanitizer build (BIMROCK_SANITIZE, about 10x slower) runs only the coarse meshes.
+#if defined(__SANITIZE_ADDRESS__)
+#define BIMROCK_PRANDTL_SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define BIMROCK_PRANDTL_SANITIZED 1
+#endif
+#endif
+#ifndef BIMROCK_PRANDTL_SANITIZED
+#define BIMROCK_PRANDTL_SANITIZED 0
+#endif
+
+namespace bimrock {
+namespace {
+
+constexpr bool kSanitized = BIMROCK_PRANDTL_SANITIZED != 0;
+
+constexpr double kPrandtl = 2.0 + M_PI;  // q_u / c, Prandtl 1920
+constexpr double kCohesion = 10e3;       // c [Pa]
+constexpr double kYoung = 1000.0 * kCohesion;
+constexpr double kPoisson = 0.3;
+constexpr double kHalfWidth = 1.0;  // b = B / 2 [m]
+constexpr int kPlanes = 24;         // the default polygon of the Tresca criterion
+/// Yielding joints: k = p E / l. Stiff enough that the joints add ~1% to the elastic
+/// settlement; the collapse load does not depend on it (but see the DISABLED_ tests).
+constexpr double kJointPenalty = 100.0;
+
+enum class Yielding { interfaces, blocks, both };
+
+const char* to_string(Yielding y) {
+  switch (y) {
+    case Yielding::interfaces:
+      return "interfaces only";
+    case Yielding::blocks:
+      return "blocks only";
+    case Yielding::both:
+      return "blocks and interfaces";
+  }
+  return "";
+}
+
+struct Footing {
+  Yielding yielding = Yielding::blocks;
+  int n = 1;  // cells per footing half-width: h = b / n, B / h = 2 n
+  double joint_penalty = kJointPenalty;
+};
+
+CaseSpec footing_case(const Footing& f) {
+  const double h = kHalfWidth / f.n;
+  const int nx = static_cast<int>(std::ceil(3.5 * f.n));  // width ~3.5 b
+  const int ny = static_cast<int>(std::ceil(1.5 * f.n));  // depth ~1.5 b > sqrt(2) b
+  const double w = nx * h;
+  const double d = ny * h;
+  CaseSpec c;
+  c.file = "prandtl";
+  BlockMaterial soil = testing::rock(kYoung, kPoisson);
+  if (f.yielding != Yielding::interfaces) {
+    BlockStrength tresca;
+    tresca.criterion = BlockStrength::Criterion::tresca;
+    tresca.cohesion = kCohesion;
+    tresca.planes = kPlanes;
+    soil.strength = tresca;
+  }
+  c.block_materials = {soil};
+  JointMaterial joint = testing::continuum(kDefaultPenaltyFactor);
+  if (f.yielding != Yielding::blocks) {
+    JointStrength tresca_like;
+    tresca_like.cohesion = Softening::constant(kCohesion);
+    tresca_like.tensile = Softening::constant(1000.0 * kCohesion);
+    joint.strength = tresca_like;
+    joint.penalty_factor = f.joint_penalty;
+    joint.integration = Integration::lobatto;  // yield at the end points (DESIGN.md section 3)
+  }
+  c.joint_materials = {joint};
+  c.blocks = testing::blocks_of(testing::crossed_triangles(nx, ny, h, Vec2(0.0, -d)));
+  c.default_joint = "continuum";
+  c.supports.push_back(testing::roller({0, -d}, {0, 0}));  // symmetry line
+  c.supports.push_back(testing::roller({w, -d}, {w, 0}));
+  c.supports.push_back(testing::fixed({0, -d}, {w, -d}));
+  // The pressure c on the footing, scaled by the stage factor: the factor is q / c. The centre
+  // of the footing moves down by 3 cm in 12 steps (the elastic settlement at collapse is ~1.5 cm).
+  StageSpec load{"footing", {}, 12, std::nullopt, {0, "stages[0]"}};
+  load.loads.tractions.push_back(testing::pressure_on({0, 0}, {kHalfWidth, 0}, -kCohesion));
+  load.control = DisplacementControlSpec{"centre", Vec2(0.0, -1.0), 0.03, {0, "control"}};
+  c.stages = {load};
+  c.monitors.push_back({"centre", Vec2(0.0, 0.0), {0, "centre"}});
+  return c;
+}
+
+struct FootingResult {
+  double q = 0.0;  // collapse pressure / c: the largest pressure carried
+  int blocks = 0;
+  double seconds = 0.0;
+  std::string note;  // how the analysis ended
+
+  [[nodiscard]] double ratio() const { return q / kPrandtl; }
+  [[nodiscard]] double error() const { return std::abs(ratio() - 1.0); }
+};
+
+FootingResult collapse_pressure(const Footing& f) {
+  const auto start = std::chrono::steady_clock::now();
+  const Model model = build_model(footing_case(f));
+  FootingResult out;
+  out.blocks = model.n_blocks();
+  auto keep_peak = [&](const IncrementRecord& r, const AnalysisState&) {
+    out.q = std::max(out.q, r.stage_factor);
+  };
+  try {
+    const PlasticResult r = run_plastic_analysis(model, {}, keep_peak);
+    out.note = r.collapse ? "collapse reported" : "plateau";
+  } catch (const std::runtime_error& e) {
+    // See the file comment: an LCP on the plateau that cannot be solved accurately.
+    out.note = std::string("stopped: ") + e.what();
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("  %-22s B/h = %2d  %5d blocks  q_u/c = %.4f  ratio to 2+pi = %.4f  %6.2f s  (%s)\n",
+              to_string(f.yielding), 2 * f.n, out.blocks, out.q, out.ratio(), out.seconds,
+              out.note.c_str());
+  return out;
+}
+
+// The meshes n = b / h of a refinement study; the sanitizer build keeps the first `sanitized`.
+std::vector<FootingResult> refine(Yielding y, const std::vector<int>& meshes,
+                                  std::size_t sanitized) {
+  std::printf("Prandtl strip footing, %s (expected (2 + pi) c = %.4f c):\n", to_string(y),
+              kPrandtl);
+  std::vector<FootingResult> results;
+  for (std::size_t k = 0; k < meshes.size(); ++k) {
+    if (kSanitized && k >= sanitized) {
+      std::printf("  B/h = %d skipped in the sanitizer build\n", 2 * meshes[k]);
+      continue;
+    }
+    results.push_back(collapse_pressure({y, meshes[k]}));
+  }
+  return results;
+}
+
+// The smallest strength a 24-plane inscribed polygon can give: every stress of Prandtl's field
+// scaled by cos(pi/24).
+const double kPolygonBound = kPrandtl * std::cos(M_PI / kPlanes);
+
+TEST(Prandtl, BlocksOnlyConvergesFromAboveToWithinFivePercent) {
+  const std::vector<FootingResult> r = refine(Yielding::blocks, {1, 2}, 1);
+  for (const FootingResult& x : r)
+    EXPECT_GT(x.q, kPolygonBound);
+  if (kSanitized)
+    return;
+  ASSERT_EQ(r.size(), 2u);
+  // Measured: 1.123 at B/h = 2, 1.045 at B/h = 4 (and 1.025 at B/h = 6, DISABLED_ below).
+  EXPECT_LT(r[1].error(), r[0].error());
+  EXPECT_LT(r[1].error(), 0.05);
+}
+
+TEST(Prandtl, BlocksAndInterfacesIsWeakerThanBlocksOnlyAndWithinFivePercent) {
+  const std::vector<FootingResult> both = refine(Yielding::both, {1, 2}, 1);
+  for (const FootingResult& x : both)
+    EXPECT_GT(x.q, kPolygonBound);
+  // Interfaces that slip can only add mechanisms: never stronger than blocks alone on the same
+  // mesh (B/h = 2: blocks only 5.774 c).
+  const FootingResult blocks_only = collapse_pressure({Yielding::blocks, 1});
+  EXPECT_LE(both[0].q, blocks_only.q * (1.0 + 1e-6));
+  if (kSanitized)
+    return;
+  ASSERT_EQ(both.size(), 2u);
+  // Measured: 1.036 at B/h = 2, 1.013 at B/h = 4 (and 1.006 at B/h = 6, DISABLED_ below).
+  EXPECT_LT(both[1].error(), both[0].error());
+  EXPECT_LT(both[1].error(), 0.05);
+}
+
+TEST(Prandtl, InterfacesOnlyFindTheFortyFiveDegreeWedgeMechanism) {
+  // See the file comment: this variant converges to a strength above Prandtl's, not to it. On
+  // the coarsest mesh the best mechanism has 45 degree slip lines and q = 6 c exactly, 17% above
+  // (2 + pi) c. The finer meshes are printed for the trend, but their collapse is not checked:
+  // it is stopped by the spurious Lemke rays of the DISABLED_ test below (B/h = 4 stops at
+  // 5.79 c although 6 c was carried by an earlier build of the solver; B/h = 8 below 2 + pi).
+  const std::vector<FootingResult> r = refine(Yielding::interfaces, {1, 2, 3, 4}, 2);
+  EXPECT_NEAR(r[0].q, 6.0, 6e-3);
+}
+
+// Solver problems found with this test (to enable once fixed, see the file comment).
+
+// The upper bound theorem: every mechanism of the interfaces-only block mass is a Tresca
+// mechanism (rigid blocks with slip along the joints, dissipating c per unit slip), so its
+// collapse pressure cannot be below (2 + pi) c; and the limit load of a perfectly plastic body
+// does not depend on its elastic stiffness. Measured: B/h = 6 collapses at 5.70 c (p = 100) and
+// 5.09 c (p = 1e4); B/h = 8 at 5.24 c and 4.99 c; the Lemke rays that stop them are not
+// certificates of infeasibility (M^T r is not <= 0), and on a recorded LCP of such a step
+// projected Gauss-Seidel converges to a solution.
+TEST(Prandtl, DISABLED_InterfacesOnlyCollapseIsAnUpperBoundWhateverTheJointStiffness) {
+  for (int n : {2, 3, 4}) {
+    const FootingResult soft = collapse_pressure({Yielding::interfaces, n, 100.0});
+    const FootingResult stiff = collapse_pressure({Yielding::interfaces, n, 1e4});
+    EXPECT_GE(soft.q, kPrandtl * (1.0 - 1e-3)) << "B/h = " << 2 * n;
+    EXPECT_NEAR(soft.q, stiff.q, 1e-3 * soft.q) << "B/h = " << 2 * n;
+  }
+}
+
+// The third mesh of the refinement study (B/h = 6), too slow for every run: the dense LCP has 24
+// rows per yielding block. Measured: blocks only 5.2703 c = 1.0250 (81 s), blocks and
+// interfaces 5.1739 c = 1.0063 (285 s).
+TEST(Prandtl, DISABLED_FinerBlockMeshes) {
+  const FootingResult blocks_only = collapse_pressure({Yielding::blocks, 3});
+  const FootingResult both = collapse_pressure({Yielding::both, 3});
+  EXPECT_LT(blocks_only.error(), 0.03);
+  EXPECT_LT(both.error(), 0.03);
+  EXPECT_LE(both.q, blocks_only.q * (1.0 + 1e-6));
+}
+
+}  // namespace
+}  // namespace bimrock
