@@ -15,7 +15,7 @@ namespace {
 constexpr double kWidth = 640;
 constexpr double kHeight = 440;
 constexpr double kLeft = 80;
-constexpr double kRight = 20;
+constexpr double kRight = 36;
 constexpr double kTop = 40;
 constexpr double kBottom = 60;
 
