@@ -414,10 +414,15 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         }
         failing_step *= 0.5;
       }
-      if (!proven)
-        throw std::runtime_error("stage '" + stage.name +
-                                 "': the LCP of the increment at stage factor " +
-                                 std::to_string(carried) + " could not be solved accurately");
+      if (!proven) {
+        // Neither carried nor proven to fail: near a limit load the LCP is nearly singular.
+        // Stop here, honestly, with every carried increment kept; not a collapse.
+        result.stopped = Stop{st, carried,
+                              "the increment after stage factor " + std::to_string(carried) +
+                                  " could not be solved accurately, nor shown to have no "
+                                  "solution (the structure is close to a limit load)"};
+        return result;
+      }
       result.collapse = describe_collapse(st, carried, *proven, &failure, last ? &*last : nullptr);
       return result;
     }

@@ -65,11 +65,20 @@ struct Collapse {
   Eigen::VectorXd direction;  ///< displacement increment of the last carried step, unit norm
 };
 
+/// The analysis stopped before the end of its stages without a proven collapse: an increment
+/// could be neither carried nor shown to have no solution (round-off near a limit load).
+struct Stop {
+  int stage = 0;
+  double factor = 0.0;  ///< the last carried stage factor
+  std::string reason;
+};
+
 struct PlasticResult {
   std::vector<YieldPoint> points;
   AnalysisState state;
   std::vector<IncrementRecord> history;
   std::optional<Collapse> collapse;
+  std::optional<Stop> stopped;
   Timings timings;
 };
 

@@ -235,7 +235,8 @@ nlohmann::json to_json(const Row& r) {
           {"time_ratio", r.total / r.limit},
           {"whole_peak_bytes", r.run_peak},
           {"limit_peak_bytes", r.limit_peak},
-          {"memory_ratio", r.limit_peak > 0 ? nlohmann::json(r.run_peak / r.limit_peak) : nlohmann::json()}};
+          {"memory_ratio",
+           r.limit_peak > 0 ? nlohmann::json(r.run_peak / r.limit_peak) : nlohmann::json()}};
 }
 
 void write_plots(const std::vector<Row>& rows, const fs::path& folder) {

@@ -19,7 +19,7 @@
 
 namespace {
 
-enum ExitCode { kOk = 0, kInputError = 2, kModelError = 3, kInternalError = 4 };
+enum ExitCode { kOk = 0, kInputError = 2, kModelError = 3, kInternalError = 4, kStopped = 5 };
 
 std::filesystem::path default_output(const std::string& case_file) {
   return std::filesystem::path("results") / std::filesystem::path(case_file).stem();
@@ -47,6 +47,12 @@ int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
   const bimrock::ElasticSolution fields = writer.finish(result);
   if (!quiet)
     bimrock::print_plastic_summary(model, result, fields, out);
+  if (result.stopped) {
+    fmt::print(stderr, "error: {}: stage '{}' stopped at factor {}: {}\n", case_file,
+               model.stages[static_cast<std::size_t>(result.stopped->stage)].name,
+               result.stopped->factor, result.stopped->reason);
+    return kStopped;
+  }
   return kOk;
 }
 

@@ -67,6 +67,10 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
                  c.failed * load.norm());
     fmt::print("; {} yield modes in the mechanism (summary.json, collapse.png)\n",
                c.mechanism.size());
+  } else if (result.stopped) {
+    const Stop& st = *result.stopped;
+    fmt::print("STOPPED in stage '{}' at factor {:.6f}: {}; the carried increments are written\n",
+               model.stages[static_cast<std::size_t>(st.stage)].name, st.factor, st.reason);
   } else {
     fmt::print("all {} stages carried\n", model.stages.size());
   }

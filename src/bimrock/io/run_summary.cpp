@@ -112,6 +112,14 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
     } else {
       j["collapse"] = nullptr;
     }
+    if (plastic->stopped) {
+      const Stop& st = *plastic->stopped;
+      j["stopped"] = {{"stage", model.stages[static_cast<std::size_t>(st.stage)].name},
+                      {"carried_factor", st.factor},
+                      {"reason", st.reason}};
+    } else {
+      j["stopped"] = nullptr;
+    }
   }
   j["timings_s"] = timings_json(plastic ? plastic->timings : fields.timings);
   j["files"] = files;
