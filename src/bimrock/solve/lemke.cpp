@@ -25,6 +25,9 @@ constexpr double kTieFloor = 1e-4;
 /// A kernel vector of a numerically singular active block is accurate to about the pivot
 /// tolerance; as an infeasibility certificate it is accepted to this relative accuracy.
 constexpr double kCertificateTolerance = 1e-8;
+/// Columns of M that are round-off residues of a cancellation (a mechanism) are held to this
+/// fraction of max|M| |r|_1 instead: far above their residues, far below a real stiffness.
+constexpr double kCertificateFloor = 1e-10;
 
 /// The problem Lemke pivots on: M^ = R M C (round-off entries removed), q^ = R q / sigma and the
 /// covering vector e^, so that z = sigma C z^ and the LCP is unchanged (positive diagonal
@@ -214,12 +217,15 @@ Eigen::VectorXd ray_direction(const Tableau& t, Index entering, const Eigen::Vec
 
 /// Whether r certifies that the LCP has no solution: r >= 0, M^T r <= 0 and q . r < 0 give
 /// r . w = (M^T r) . z + q . r < 0 for every z >= 0, so w >= 0 is impossible (Farkas).
+/// (M^T r)_j is compared with the terms it sums, (|M|^T |r|)_j, and, for a column whose entries
+/// are all round-off residues of a cancellation (a mechanism), with the size of M.
 bool certifies_infeasibility(const LcpProblem& p, const Eigen::VectorXd& r) {
   const Eigen::VectorXd mtr = p.m.transpose() * r;
   const Eigen::VectorXd size = p.m.cwiseAbs().transpose() * r.cwiseAbs();
   const double tol = kCertificateTolerance;
+  const double floor = kCertificateFloor * p.m.cwiseAbs().maxCoeff() * r.cwiseAbs().sum();
   return (r.array() >= -tol * r.cwiseAbs().maxCoeff()).all() &&
-         (mtr.array() <= tol * size.array()).all() &&
+         (mtr.array() <= tol * size.array() + floor).all() &&
          p.q.dot(r) < -tol * p.q.cwiseAbs().dot(r.cwiseAbs());
 }
 
