@@ -15,6 +15,7 @@
 #include <bimrock/io/results_writer.hpp>
 
 #include "bimrock/app/bench_command.hpp"
+#include "bimrock/app/mesh_command.hpp"
 #include "bimrock/app/report.hpp"
 
 namespace {
@@ -81,6 +82,11 @@ int main(int argc, char** argv) {
   CLI::App* check_cmd = app.add_subcommand("check", "read and check a case without solving it");
   check_cmd->add_option("case", case_file, "case file (YAML)")->required();
 
+  CLI::App* mesh_cmd = app.add_subcommand(
+      "mesh", "build the blocks of a case and write them (VTK, picture) without solving");
+  mesh_cmd->add_option("case", case_file, "case file (YAML)")->required();
+  mesh_cmd->add_option("-o,--output", output, "folder (default results/<case name>-mesh)");
+
   bimrock::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand(
       "bench",
@@ -108,6 +114,20 @@ int main(int argc, char** argv) {
       return check(case_file, quiet);
     if (*bench_cmd)
       return bimrock::run_bench(bench);
+    if (*mesh_cmd) {
+      const std::filesystem::path out =
+          output.empty() ? std::filesystem::path(default_output(case_file).string() + "-mesh")
+                         : std::filesystem::path(output);
+      if (!bimrock::is_replaceable_results_folder(out)) {
+        fmt::print(stderr,
+                   "error: {}: exists and does not hold bimrock results (no summary.json); "
+                   "choose another output folder\n",
+                   out.string());
+        return kInputError;
+      }
+      bimrock::run_mesh(case_file, out, quiet);
+      return kOk;
+    }
   } catch (const bimrock::InputError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kInputError;

@@ -4,8 +4,8 @@
 #include <bimrock/io/case_reader.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -32,7 +32,8 @@ constexpr std::array kKeys = {
     CaseKey{"", "analysis"},
     CaseKey{"", "materials", true},
     CaseKey{"", "joint_materials"},
-    CaseKey{"", "blocks", true},
+    CaseKey{"", "blocks"},
+    CaseKey{"", "domain"},
     CaseKey{"", "joints"},
     CaseKey{"", "supports"},
     CaseKey{"", "loads"},
@@ -71,6 +72,36 @@ constexpr std::array kKeys = {
     CaseKey{"joint_materials.<name>", "softening_opening"},
     CaseKey{"blocks[]", "material", true},
     CaseKey{"blocks[]", "vertices", true},
+    CaseKey{"domain", "outline", true},
+    CaseKey{"domain", "holes"},
+    CaseKey{"domain", "zones"},
+    CaseKey{"domain", "material", true},
+    CaseKey{"domain", "joint_sets"},
+    CaseKey{"domain", "joints"},
+    CaseKey{"domain", "intact"},
+    CaseKey{"domain", "min_block_area"},
+    CaseKey{"domain", "subdivision"},
+    CaseKey{"domain.zones[]", "material", true},
+    CaseKey{"domain.zones[]", "outline", true},
+    CaseKey{"domain.joint_sets[]", "material", true},
+    CaseKey{"domain.joint_sets[]", "dip", true},
+    CaseKey{"domain.joint_sets[]", "spacing", true},
+    CaseKey{"domain.joint_sets[]", "origin"},
+    CaseKey{"domain.joint_sets[]", "trace_length"},
+    CaseKey{"domain.joint_sets[]", "gap"},
+    CaseKey{"domain.joint_sets[]", "staggered"},
+    CaseKey{"domain.joint_sets[]", "spacing_variation"},
+    CaseKey{"domain.joint_sets[]", "dip_variation"},
+    CaseKey{"domain.joint_sets[]", "seed"},
+    CaseKey{"domain.joint_sets[].<variation>", "distribution", true},
+    CaseKey{"domain.joint_sets[].<variation>", "amount", true},
+    CaseKey{"domain.joints[]", "material", true},
+    CaseKey{"domain.joints[]", "from", true},
+    CaseKey{"domain.joints[]", "to", true},
+    CaseKey{"domain.subdivision", "size", true},
+    CaseKey{"domain.subdivision", "pattern"},
+    CaseKey{"domain.subdivision", "jitter"},
+    CaseKey{"domain.subdivision", "seed"},
     CaseKey{"joints", "default"},
     CaseKey{"joints", "rules"},
     CaseKey{"joints.rules[]", "material", true},
@@ -334,8 +365,8 @@ Softening softening(const Map& m, const char* peak_key, const char* residual_key
 /// and dilation [deg], tensile strength [Pa], with optional linear softening.
 std::optional<JointStrength> read_joint_strength(const Map& m) {
   const bool any = m.has("cohesion") || m.has("friction") || m.has("tensile_strength") ||
-                   m.has("dilation") || m.has("residual_cohesion") ||
-                   m.has("residual_friction") || m.has("residual_tensile_strength");
+                   m.has("dilation") || m.has("residual_cohesion") || m.has("residual_friction") ||
+                   m.has("residual_tensile_strength");
   if (!any) {
     for (const char* k : {"softening_slip", "softening_opening"})
       if (const auto v = m.find(k))
@@ -345,8 +376,8 @@ std::optional<JointStrength> read_joint_strength(const Map& m) {
   JointStrength j;
   j.cohesion = softening(m, "cohesion", "residual_cohesion", "softening_slip", 1.0, false);
   j.friction = softening(m, "friction", "residual_friction", "softening_slip", 1.0, true);
-  j.tensile =
-      softening(m, "tensile_strength", "residual_tensile_strength", "softening_opening", 1.0, false);
+  j.tensile = softening(m, "tensile_strength", "residual_tensile_strength", "softening_opening",
+                        1.0, false);
   if (const auto d = m.find("dilation"))
     j.dilation = std::tan(angle_deg(*d) * kDegree);
   return j;
@@ -435,6 +466,127 @@ BlockSpec read_block(const Value& v) {
     b.polygon.vertices.push_back(p.point());
   b.source = v.ref();
   return b;
+}
+
+// ---- Domain (generated blocks)
+// -------------------------------------------------------------------
+
+/// [[x, y], ...]: a polygon's vertices (its shape is checked when the blocks are cut).
+Polygon read_polygon(const Value& v) {
+  Polygon p;
+  for (const Value& point : v.list())
+    p.vertices.push_back(point.point());
+  return p;
+}
+
+Variation read_variation(const Value& v) {
+  const Map m = open(v, "domain.joint_sets[].<variation>");
+  Variation r;
+  r.distribution = choice<Distribution>(
+      m.at("distribution"), {{"uniform", Distribution::uniform}, {"normal", Distribution::normal}});
+  r.amount = m.at("amount").number();
+  if (r.amount < 0.0)
+    m.at("amount").fail("must be >= 0");
+  return r;
+}
+
+/// A whole number >= 0 for a random seed.
+std::uint64_t seed(const Value& v) {
+  const int s = v.integer();
+  if (s < 0)
+    v.fail("must be a whole number >= 0");
+  return static_cast<std::uint64_t>(s);
+}
+
+JointSet read_joint_set(const Value& v) {
+  const Map m = open(v, "domain.joint_sets[]");
+  JointSet j;
+  j.material = name(m.at("material"));
+  j.dip_deg = m.at("dip").number();
+  j.spacing = positive(m.at("spacing"));
+  if (const auto o = m.find("origin"))
+    j.origin = o->point();
+  if (const auto l = m.find("trace_length"))
+    j.trace_length = positive(*l);
+  j.gap = m.number_or("gap", 0.0);
+  if (j.gap < 0.0)
+    m.at("gap").fail("must be >= 0");
+  j.staggered = m.boolean_or("staggered", false);
+  if (const auto sv = m.find("spacing_variation"))
+    j.spacing_variation = read_variation(*sv);
+  if (const auto dv = m.find("dip_variation"))
+    j.dip_variation = read_variation(*dv);
+  if (const auto s = m.find("seed"))
+    j.seed = seed(*s);
+  return j;
+}
+
+Joint read_single_joint(const Value& v) {
+  const Map m = open(v, "domain.joints[]");
+  return {name(m.at("material")), Segment{m.at("from").point(), m.at("to").point()}};
+}
+
+/// domain: the outline, holes and zones to cut, the joint sets and joints that cut it.
+DomainSpec read_domain(const Value& v) {
+  const Map m = open(v, "domain");
+  DomainSpec d;
+  d.source = v.ref();
+  d.lines["domain"] = v.line();
+  auto remember = [&](const Value& item) { d.lines[item.item()] = item.line(); };
+  const Value outline = m.at("outline");
+  remember(outline);
+  d.domain.outline = read_polygon(outline);
+  d.material = name(m.at("material"));
+  if (const auto holes = m.find("holes")) {
+    for (const Value& h : holes->list()) {
+      remember(h);
+      d.domain.holes.push_back(read_polygon(h));
+    }
+  }
+  if (const auto zones = m.find("zones")) {
+    for (const Value& z : zones->list()) {
+      remember(z);
+      const Map zm = open(z, "domain.zones[]");
+      d.domain.zones.push_back({name(zm.at("material")), read_polygon(zm.at("outline"))});
+    }
+  }
+  if (const auto sets = m.find("joint_sets")) {
+    for (const Value& s : sets->list()) {
+      remember(s);
+      d.joint_sets.push_back(read_joint_set(s));
+    }
+  }
+  if (const auto joints = m.find("joints")) {
+    for (const Value& j : joints->list()) {
+      remember(j);
+      d.joints.push_back(read_single_joint(j));
+    }
+  }
+  d.intact = m.text_or("intact", "");
+  if (d.intact == "continuum")
+    d.intact.clear();
+  if (const auto a = m.find("min_block_area")) {
+    const double area = a->number();
+    if (area < 0.0)
+      a->fail("must be >= 0");
+    d.min_block_area = area;
+  }
+  if (const auto sub = m.find("subdivision")) {
+    const Map sm = open(*sub, "domain.subdivision");
+    VoronoiOptions o;
+    o.target_size = positive(sm.at("size"));
+    if (const auto p = sm.find("pattern")) {
+      o.pattern = choice<SeedPattern>(
+          *p, {{"jittered_grid", SeedPattern::jittered_grid}, {"random", SeedPattern::random}});
+    }
+    o.jitter = sm.number_or("jitter", o.jitter);
+    if (o.jitter < 0.0 || o.jitter > 1.0)
+      sm.at("jitter").fail("must lie in [0, 1]");
+    if (const auto s = sm.find("seed"))
+      o.seed = seed(*s);
+    d.subdivision = o;
+  }
+  return d;
 }
 
 JointRule read_joint_rule(const Value& v) {
@@ -585,6 +737,11 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
     if (s.blocks.empty())
       v->fail("give at least one block");
   }
+  if (const auto v = m.find("domain")) {
+    if (m.has("blocks"))
+      v->fail("give either blocks or a domain to cut them from, not both");
+    s.domain = read_domain(*v);
+  }
   if (const auto v = m.find("joints"))
     read_joints(*v, s);
   if (const auto v = m.find("supports"))
@@ -603,6 +760,9 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
       v->fail("give at least one stage");
   }
   require_keys(m, "");
+  if (!m.has("blocks") && !m.has("domain"))
+    throw InputError(file, 0, "blocks",
+                     "required key 'blocks' is missing (or give a domain to cut the blocks from)");
   return c;
 }
 

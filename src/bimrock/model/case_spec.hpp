@@ -6,7 +6,12 @@
 #include <string>
 #include <vector>
 
+#include <map>
+
+#include <bimrock/geometry/domain.hpp>
+#include <bimrock/geometry/joint_set.hpp>
 #include <bimrock/geometry/polygon.hpp>
+#include <bimrock/geometry/voronoi_subdivision.hpp>
 #include <bimrock/model/materials.hpp>
 #include <bimrock/model/selector.hpp>
 
@@ -55,7 +60,8 @@ struct PointLoadSpec {
 struct TractionSpec {
   Selector where;
   double normal = 0.0;  ///< [Pa] along the outward normal: positive pulls (tension positive)
-  double shear = 0.0;   ///< [Pa] along the tangent s = (-n_y, n_x) (counter-clockwise round the block)
+  double shear =
+      0.0;  ///< [Pa] along the tangent s = (-n_y, n_x) (counter-clockwise round the block)
   SourceRef source;
 };
 
@@ -92,6 +98,21 @@ struct StageSpec {
   SourceRef source;
 };
 
+/// Blocks cut from a rock domain by joint sets (the case file's `domain`), instead of listed.
+struct DomainSpec {
+  Domain domain;                     ///< outline, holes, zones (each naming its block material)
+  std::string material;              ///< block material outside every zone
+  std::vector<JointSet> joint_sets;  ///< each names its joint material
+  std::vector<Joint> joints;         ///< individual joints
+  /// Joint material of the cuts through intact rock (rock bridges, convex partitions, zone
+  /// contacts, subdivision cells); empty: continuum (penalty) interfaces.
+  std::string intact;
+  std::optional<double> min_block_area;       ///< [m^2]; default suggested_min_block_area()
+  std::optional<VoronoiOptions> subdivision;  ///< split blocks larger than target_size^2
+  SourceRef source;
+  std::map<std::string, int> lines;  ///< the line of each item ("domain.holes[1]"), for errors
+};
+
 struct CaseSpec {
   std::string file;  ///< the case file, for error messages
   std::string title;
@@ -99,10 +120,11 @@ struct CaseSpec {
   std::vector<BlockMaterial> block_materials;
   std::vector<JointMaterial> joint_materials;
   std::vector<BlockSpec> blocks;
-  std::string default_joint;  ///< joint material of interfaces no rule picks
+  std::optional<DomainSpec> domain;  ///< blocks generated from a domain (then `blocks` is empty)
+  std::string default_joint;         ///< joint material of interfaces no rule picks
   std::vector<JointRule> joint_rules;
   std::vector<SupportSpec> supports;
-  LoadsSpec loads;  ///< the loads of an elastic analysis (no stages)
+  LoadsSpec loads;                ///< the loads of an elastic analysis (no stages)
   std::vector<StageSpec> stages;  ///< a nonlinear analysis when not empty
   std::vector<MonitorSpec> monitors;
 };

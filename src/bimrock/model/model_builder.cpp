@@ -2,15 +2,22 @@
 #include <cmath>
 #include <map>
 
+#include <bimrock/model/block_generation.hpp>
 #include <bimrock/model/model.hpp>
 
 namespace bimrock {
 namespace {
 
-std::string quoted(const std::string& s) { return "'" + s + "'"; }
+std::string quoted(const std::string& s) {
+  return "'" + s + "'";
+}
 
-bool finite_positive(double x) { return std::isfinite(x) && x > 0.0; }
-bool finite_non_negative(double x) { return std::isfinite(x) && x >= 0.0; }
+bool finite_positive(double x) {
+  return std::isfinite(x) && x > 0.0;
+}
+bool finite_non_negative(double x) {
+  return std::isfinite(x) && x >= 0.0;
+}
 
 class Builder {
  public:
@@ -21,6 +28,11 @@ class Builder {
     model_.title = spec_.title;
     check_settings();
     add_materials();
+    if (spec_.domain) {
+      if (!spec_.blocks.empty())
+        fail(spec_.domain->source, "give either blocks or a domain, not both");
+      generated_ = generate_blocks(*spec_.domain, spec_.file);
+    }
     add_blocks();
     add_interfaces();
     add_supports();
@@ -46,38 +58,66 @@ class Builder {
 
   void add_materials() {
     for (const BlockMaterial& m : spec_.block_materials) {
-      if (block_material_index_.count(m.name)) fail(m.source, "duplicate material name");
-      if (!finite_positive(m.young)) fail(m.source, "Young's modulus E must be positive");
+      if (block_material_index_.count(m.name))
+        fail(m.source, "duplicate material name");
+      if (!finite_positive(m.young))
+        fail(m.source, "Young's modulus E must be positive");
       if (!std::isfinite(m.poisson) || m.poisson <= -1.0 || m.poisson >= 0.5)
         fail(m.source, "Poisson's ratio nu must lie in (-1, 0.5)");
-      if (!finite_non_negative(m.unit_weight)) fail(m.source, "unit weight must be >= 0");
+      if (!finite_non_negative(m.unit_weight))
+        fail(m.source, "unit weight must be >= 0");
       block_material_index_[m.name] = static_cast<int>(model_.block_materials.size());
       model_.block_materials.push_back(m);
     }
     for (const JointMaterial& j : spec_.joint_materials) {
-      if (joint_material_index_.count(j.name)) fail(j.source, "duplicate joint material name");
+      if (joint_material_index_.count(j.name))
+        fail(j.source, "duplicate joint material name");
       if (j.kind == JointMaterial::Kind::springs) {
-        if (!finite_positive(j.normal_stiffness)) fail(j.source, "normal stiffness k_n must be positive");
-        if (!finite_non_negative(j.shear_stiffness)) fail(j.source, "shear stiffness k_s must be >= 0");
+        if (!finite_positive(j.normal_stiffness))
+          fail(j.source, "normal stiffness k_n must be positive");
+        if (!finite_non_negative(j.shear_stiffness))
+          fail(j.source, "shear stiffness k_s must be >= 0");
       } else if (!finite_positive(j.penalty_factor)) {
         fail(j.source, "penalty factor must be positive");
       }
-      if (j.subdivisions < 1) fail(j.source, "subdivisions must be at least 1");
+      if (j.subdivisions < 1)
+        fail(j.source, "subdivisions must be at least 1");
       joint_material_index_[j.name] = static_cast<int>(model_.joint_materials.size());
       model_.joint_materials.push_back(j);
     }
   }
 
+  // The joint material of cuts through intact rock in a generated case: the domain's `intact`,
+  // or a continuum (penalty) material added for it.
+  int intact_material() {
+    if (!spec_.domain->intact.empty())
+      return joint_material(spec_.domain->intact, spec_.domain->source);
+    if (intact_ < 0) {
+      JointMaterial j;
+      j.name = "intact rock (continuum)";
+      j.kind = JointMaterial::Kind::continuum;
+      j.penalty_factor = model_.settings.penalty_factor;
+      j.integration = Integration::gauss;
+      j.source = spec_.domain->source;
+      intact_ = static_cast<int>(model_.joint_materials.size());
+      model_.joint_materials.push_back(j);
+    }
+    return intact_;
+  }
+
   int joint_material(const std::string& name, const SourceRef& ref) const {
     auto it = joint_material_index_.find(name);
-    if (it == joint_material_index_.end()) fail(ref, "unknown joint material " + quoted(name));
+    if (it == joint_material_index_.end())
+      fail(ref, "unknown joint material " + quoted(name));
     return it->second;
   }
 
   void add_blocks() {
-    if (spec_.blocks.empty()) fail({0, "blocks"}, "the case has no blocks");
+    const std::vector<BlockSpec>& blocks = generated_ ? generated_->blocks : spec_.blocks;
+    if (blocks.empty())
+      fail({0, "blocks"}, "the case has no blocks");
     BBox box;
-    for (const BlockSpec& b : spec_.blocks) {
+    for (const BlockSpec& b : blocks) {
       for (const Vec2& v : b.polygon.vertices) {
         if (!std::isfinite(v.x()) || !std::isfinite(v.y()))
           fail(b.source, "a vertex is not a finite number (NaN or infinity)");
@@ -85,16 +125,19 @@ class Builder {
       }
     }
     model_.tolerance = model_tolerance(box);
-    for (const BlockSpec& b : spec_.blocks) {
+    for (const BlockSpec& b : blocks) {
       auto it = block_material_index_.find(b.material);
-      if (it == block_material_index_.end()) fail(b.source, "unknown material " + quoted(b.material));
+      if (it == block_material_index_.end())
+        fail(b.source, "unknown material " + quoted(b.material));
       const PolygonCheck check = check_convex_polygon(b.polygon, model_.tolerance);
-      if (check.defect != PolygonDefect::none) fail(b.source, describe(check));
+      if (check.defect != PolygonDefect::none)
+        fail(b.source, describe(check));
       model_.blocks.push_back(
           {b.polygon, centroid(b.polygon), signed_area(b.polygon), it->second, b.source});
     }
     polygons_.reserve(model_.blocks.size());
-    for (const Block& b : model_.blocks) polygons_.push_back(b.polygon);
+    for (const Block& b : model_.blocks)
+      polygons_.push_back(b.polygon);
     const auto overlaps = find_overlaps(polygons_, model_.tolerance);
     if (!overlaps.empty()) {
       const auto [i, j] = overlaps.front();
@@ -106,7 +149,8 @@ class Builder {
   std::string describe_block(int k) const {
     const SourceRef& s = model_.blocks[k].source;
     std::string d = s.item.empty() ? "block " + std::to_string(k) : s.item;
-    if (s.line > 0) d += " (line " + std::to_string(s.line) + ")";
+    if (s.line > 0)
+      d += " (line " + std::to_string(s.line) + ")";
     return d;
   }
 
@@ -114,9 +158,11 @@ class Builder {
   // or a rigid penalty support when m < 0.
   SpringPair springs(int m, int i, int j) const {
     if (m >= 0 && model_.joint_materials[m].kind == JointMaterial::Kind::springs)
-      return {model_.joint_materials[m].normal_stiffness, model_.joint_materials[m].shear_stiffness};
+      return {model_.joint_materials[m].normal_stiffness,
+              model_.joint_materials[m].shear_stiffness};
     // Penalty (eq. 15): k = p E / l, E the stiffer block, l = sqrt of the mean block area.
-    const double p = m >= 0 ? model_.joint_materials[m].penalty_factor : model_.settings.penalty_factor;
+    const double p =
+        m >= 0 ? model_.joint_materials[m].penalty_factor : model_.settings.penalty_factor;
     double e = model_.block_materials[model_.blocks[i].material].young;
     double area = model_.blocks[i].area;
     if (j != kGround) {
@@ -142,6 +188,12 @@ class Builder {
       const int m = joint_material(spec_.default_joint, {0, "joints.default"});
       std::fill(material.begin(), material.end(), m);
     }
+    if (generated_) {  // the joint sets' materials, intact rock elsewhere; rules still override
+      for (std::size_t k = 0; k < shared_.size(); ++k) {
+        const std::string name = generated_->joint_between(shared_[k].i, shared_[k].j);
+        material[k] = name.empty() ? intact_material() : joint_material(name, spec_.domain->source);
+      }
+    }
     for (const JointRule& rule : spec_.joint_rules) {
       const int m = joint_material(rule.material, rule.source);
       bool any = false;
@@ -151,22 +203,23 @@ class Builder {
           any = true;
         }
       }
-      if (!any) fail(rule.source, "selects no interface between blocks");
+      if (!any)
+        fail(rule.source, "selects no interface between blocks");
     }
     for (std::size_t k = 0; k < shared_.size(); ++k) {
       const SharedEdge& s = shared_[k];
       if (material[k] < 0) {
         const Vec2 mid = s.segment.midpoint();
-        fail({0, "joints"}, "the interface between " + describe_block(s.i) + " and " +
-                                describe_block(s.j) + " at (" + std::to_string(mid.x()) + ", " +
-                                std::to_string(mid.y()) +
-                                ") has no joint material: give a default or a rule that selects it");
+        fail({0, "joints"},
+             "the interface between " + describe_block(s.i) + " and " + describe_block(s.j) +
+                 " at (" + std::to_string(mid.x()) + ", " + std::to_string(mid.y()) +
+                 ") has no joint material: give a default or a rule that selects it");
       }
       const JointMaterial& jm = model_.joint_materials[material[k]];
       const SpringPair k_ns = springs(material[k], s.i, s.j);
-      push_interface({s.i, s.j, s.segment, s.normal, k_ns.normal, k_ns.shear, jm.integration,
-                      material[k], -1},
-                     jm.subdivisions);
+      push_interface(
+          {s.i, s.j, s.segment, s.normal, k_ns.normal, k_ns.shear, jm.integration, material[k], -1},
+          jm.subdivisions);
     }
   }
 
@@ -179,26 +232,31 @@ class Builder {
       bool any = false;
       for (std::size_t e = 0; e < model_.boundary.size(); ++e) {
         const BoundaryEdge& edge = model_.boundary[e];
-        if (!selects(s.where, edge.segment, model_.tolerance)) continue;
+        if (!selects(s.where, edge.segment, model_.tolerance))
+          continue;
         if (supported_by[e] >= 0)
           fail(s.source, "selects a boundary edge already held by " +
                              spec_.supports[supported_by[e]].source.item);
         supported_by[e] = static_cast<int>(sup);
         any = true;
         SpringPair k_ns = springs(m, edge.polygon, kGround);
-        if (s.kind == SupportKind::roller) k_ns.shear = 0.0;
-        const Integration rule = m >= 0 ? model_.joint_materials[m].integration : Integration::lobatto;
+        if (s.kind == SupportKind::roller)
+          k_ns.shear = 0.0;
+        const Integration rule =
+            m >= 0 ? model_.joint_materials[m].integration : Integration::lobatto;
         const int subdivisions = m >= 0 ? model_.joint_materials[m].subdivisions : 1;
         push_interface({edge.polygon, kGround, edge.segment, edge.outward_normal, k_ns.normal,
                         k_ns.shear, rule, m, static_cast<int>(sup)},
                        subdivisions);
       }
-      if (!any) fail(s.source, "selects no boundary edge");
+      if (!any)
+        fail(s.source, "selects no boundary edge");
     }
   }
 
   int block_at(const Vec2& p, const SourceRef& ref, const std::string& what) const {
-    if (!std::isfinite(p.x()) || !std::isfinite(p.y())) fail(ref, what + " is not a finite point");
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+      fail(ref, what + " is not a finite point");
     const int b = find_block_containing(model_, p);
     if (b < 0)
       fail(ref, what + " (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) +
@@ -221,11 +279,13 @@ class Builder {
         fail(t.source, "traction must be finite");
       bool any = false;
       for (const BoundaryEdge& e : model_.boundary) {
-        if (!selects(t.where, e.segment, model_.tolerance)) continue;
+        if (!selects(t.where, e.segment, model_.tolerance))
+          continue;
         any = true;
         loads.tractions.push_back({e.polygon, e.segment, e.outward_normal, t.normal, t.shear});
       }
-      if (!any) fail(t.source, "selects no boundary edge");
+      if (!any)
+        fail(t.source, "selects no boundary edge");
     }
     return loads;
   }
@@ -236,13 +296,16 @@ class Builder {
     for (const StageSpec& st : spec_.stages) {
       Stage stage{st.name, resolve_loads(st.loads, st.source.item), st.increments, std::nullopt,
                   st.source};
-      if (st.increments < 1) fail(st.source, "increments must be at least 1");
+      if (st.increments < 1)
+        fail(st.source, "increments must be at least 1");
       if (st.control) {
         const DisplacementControlSpec& c = *st.control;
         int monitor = -1;
         for (std::size_t k = 0; k < model_.monitors.size(); ++k)
-          if (model_.monitors[k].name == c.monitor) monitor = static_cast<int>(k);
-        if (monitor < 0) fail(c.source, "unknown monitor '" + c.monitor + "'");
+          if (model_.monitors[k].name == c.monitor)
+            monitor = static_cast<int>(k);
+        if (monitor < 0)
+          fail(c.source, "unknown monitor '" + c.monitor + "'");
         if (!std::isfinite(c.displacement) || c.displacement == 0.0)
           fail(c.source, "the prescribed displacement must be a non-zero number");
         if (!std::isfinite(c.direction.norm()) || c.direction.norm() == 0.0)
@@ -255,7 +318,8 @@ class Builder {
 
   void add_monitors() {
     for (const MonitorSpec& m : spec_.monitors) {
-      model_.monitors.push_back({m.name, block_at(m.point, m.source, "the monitor point"), m.point});
+      model_.monitors.push_back(
+          {m.name, block_at(m.point, m.source, "the monitor point"), m.point});
     }
   }
 
@@ -264,16 +328,21 @@ class Builder {
   std::map<std::string, int> block_material_index_;
   std::map<std::string, int> joint_material_index_;
   std::vector<Polygon> polygons_;
+  std::optional<GeneratedBlocks> generated_;
+  int intact_ = -1;
   std::vector<SharedEdge> shared_;
 };
 
 }  // namespace
 
-Model build_model(const CaseSpec& spec) { return Builder(spec).build(); }
+Model build_model(const CaseSpec& spec) {
+  return Builder(spec).build();
+}
 
 int find_block_containing(const Model& model, const Vec2& p) {
   for (int k = 0; k < model.n_blocks(); ++k) {
-    if (contains(model.blocks[k].polygon, p, model.tolerance)) return k;
+    if (contains(model.blocks[k].polygon, p, model.tolerance))
+      return k;
   }
   return -1;
 }

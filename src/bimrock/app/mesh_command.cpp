@@ -1,0 +1,71 @@
+#include "bimrock/app/mesh_command.hpp"
+
+#include <map>
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <bimrock/analysis/elastic_analysis.hpp>
+#include <bimrock/io/block_picture.hpp>
+#include <bimrock/io/case_reader.hpp>
+#include <bimrock/io/output_folder.hpp>
+#include <bimrock/io/run_summary.hpp>
+#include <bimrock/io/vtk_writer.hpp>
+
+namespace bimrock {
+
+void run_mesh(const std::string& case_file, const std::filesystem::path& out, bool quiet) {
+  const Case c = read_case_file(case_file);
+  const Model model = build_model(c.spec);
+  StagingFolder folder(out);
+  ElasticSolution undisplaced;
+  undisplaced.u = Eigen::VectorXd::Zero(model.n_dofs());
+  evaluate_fields(model, undisplaced);
+  write_vtu(model, undisplaced, {}, folder.path() / "blocks.vtu");
+  write_block_picture(model, {model.title.empty() ? "blocks" : model.title, {}, 0.05, {}, 1400},
+                      folder.path() / "blocks");
+
+  std::map<std::string, int> blocks_by_material, interfaces_by_material;
+  for (const Block& b : model.blocks)
+    ++blocks_by_material[model.block_materials[static_cast<std::size_t>(b.material)].name];
+  int supports = 0;
+  for (const Interface& f : model.interfaces) {
+    if (f.is_support()) {
+      ++supports;
+      continue;
+    }
+    ++interfaces_by_material[model.joint_materials[static_cast<std::size_t>(f.joint_material)]
+                                 .name];
+  }
+  double min_area = model.blocks.empty() ? 0.0 : model.blocks.front().area, max_area = min_area;
+  for (const Block& b : model.blocks) {
+    min_area = std::min(min_area, b.area);
+    max_area = std::max(max_area, b.area);
+  }
+  const nlohmann::json summary = {{"program", "bimrock mesh"},
+                                  {"case", case_file},
+                                  {"units", "SI: m"},
+                                  {"blocks", model.n_blocks()},
+                                  {"interfaces", model.n_interfaces() - supports},
+                                  {"support_interfaces", supports},
+                                  {"area_m2", total_area(model)},
+                                  {"smallest_block_m2", min_area},
+                                  {"largest_block_m2", max_area},
+                                  {"blocks_by_material", blocks_by_material},
+                                  {"interfaces_by_joint_material", interfaces_by_material},
+                                  {"files", {"blocks.vtu", "blocks.png", "blocks.svg"}}};
+  write_json(summary, folder.path() / "summary.json");
+  folder.commit();
+  if (quiet)
+    return;
+  fmt::print(
+      "{}: {} blocks (area {:.6g} m^2, from {:.3g} to {:.3g} m^2 each), {} interfaces, {} support "
+      "interfaces\n",
+      case_file, model.n_blocks(), total_area(model), min_area, max_area,
+      model.n_interfaces() - supports, supports);
+  for (const auto& [name, n] : interfaces_by_material)
+    fmt::print("  {:>6} interfaces of {}\n", n, name);
+  fmt::print("blocks written to {}/ (blocks.vtu for ParaView, blocks.png)\n", out.string());
+}
+
+}  // namespace bimrock

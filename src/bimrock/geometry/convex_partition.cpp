@@ -1,0 +1,84 @@
+#include <bimrock/geometry/convex_partition.hpp>
+
+#include <algorithm>
+#include <iterator>
+#include <utility>
+
+#include <CGAL/Partition_traits_2.h>
+#include <CGAL/partition_2.h>
+#include <CGAL/property_map.h>
+
+namespace bimrock::cut {
+namespace {
+
+// Partition on corner indices: the pieces come back as index lists, so no exact point is ever
+// compared for equality (which would force exact arithmetic) to find which corner it is.
+using PointMap = CGAL::Pointer_property_map<Point>::type;
+using PartitionTraits = CGAL::Partition_traits_2<Kernel, PointMap>;
+
+// Diagonals (pairs of corner indices, lower first) of a convex partition of the corners.
+std::vector<std::pair<std::size_t, std::size_t>> diagonals(std::vector<Point>& corners,
+                                                           int max_optimal_vertices) {
+  const std::size_t m = corners.size();
+  std::vector<std::size_t> index(m);
+  for (std::size_t k = 0; k < m; ++k) index[k] = k;
+  const PartitionTraits traits(CGAL::make_property_map(corners));
+  std::vector<PartitionTraits::Polygon_2> pieces;
+  if (m <= static_cast<std::size_t>(max_optimal_vertices))
+    CGAL::optimal_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces),
+                                     traits);
+  else
+    CGAL::approx_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces),
+                                    traits);
+  std::vector<std::pair<std::size_t, std::size_t>> out;
+  for (const auto& piece : pieces) {
+    const std::vector<std::size_t> ring(piece.vertices_begin(), piece.vertices_end());
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const std::size_t u = ring[k];
+      const std::size_t w = ring[(k + 1) % ring.size()];
+      if (w != (u + 1) % m && u != (w + 1) % m) out.push_back(std::minmax(u, w));
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace
+
+int number_regions(Arrangement& arr) {
+  int region = 0;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
+    if (f->data().inside) f->data().region = region++;
+  return region;
+}
+
+int partition_faces(Arrangement& arr, int max_optimal_vertices, double tol) {
+  std::vector<Face_handle> faces;
+  FaceCorners fc;
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
+    if (!f->data().inside) continue;
+    find_corners(f, fc);
+    if (!fc.convex && (tol == 0.0 || fc.reflex_deviation > tol)) faces.push_back(f);
+  }
+  for (const Face_handle f : faces) {  // pieces are new faces: the list stays valid
+    find_corners(f, fc);
+    const FaceLabel label = f->data();
+    std::vector<Point> corners;
+    std::vector<Vertex_handle> vertices;
+    for (std::size_t i : fc.corner_pos) {
+      corners.push_back(fc.cycle[i]->source()->point());
+      vertices.push_back(fc.cycle[i]->source());
+    }
+    for (const auto& [u, w] : diagonals(corners, max_optimal_vertices)) {
+      const Traits::X_monotone_curve_2 cut(
+          Traits::Base_x_monotone_curve_2(corners[u], corners[w]), CurveTag{.partition = true});
+      const Halfedge_handle e = arr.insert_at_vertices(cut, vertices[u], vertices[w]);
+      e->face()->data() = label;
+      e->twin()->face()->data() = label;
+    }
+  }
+  return static_cast<int>(faces.size());
+}
+
+}  // namespace bimrock::cut

@@ -1,0 +1,126 @@
+#include <bimrock/model/block_generation.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <bimrock/geometry/geometry_error.hpp>
+#include <bimrock/model/errors.hpp>
+
+namespace bimrock {
+
+std::string GeneratedBlocks::joint_between(int i, int j) const {
+  const int a = parent[static_cast<std::size_t>(i)];
+  const int b = parent[static_cast<std::size_t>(j)];
+  if (a == b)
+    return "";  // cells of one block: intact rock
+  const auto it = joint_between_parents.find({std::min(a, b), std::max(a, b)});
+  return it == joint_between_parents.end() ? std::string() : it->second;
+}
+
+namespace {
+
+// The line of an item, or of its nearest listed ancestor ("domain.joint_sets[0].spacing" ->
+// "domain.joint_sets[0]" -> "domain").
+int line_of(const DomainSpec& spec, std::string item) {
+  while (!item.empty()) {
+    if (const auto it = spec.lines.find(item); it != spec.lines.end())
+      return it->second;
+    const std::size_t cut = item.find_last_of(".[");
+    if (cut == std::string::npos)
+      break;
+    item.resize(cut);
+  }
+  return spec.source.line;
+}
+
+// Exact cutting leaves no zero-area sliver but may leave an edge shorter than the model's length
+// tolerance where joints nearly meet (geometry/block_cutter.hpp). Its second vertex is dropped:
+// the block moves by less than the tolerance, and interface detection, which works to the same
+// tolerance, still pairs it with its neighbours.
+Polygon without_short_edges(const Polygon& p, double tol) {
+  Polygon out;
+  for (const Vec2& v : p.vertices) {
+    if (out.vertices.empty() || (v - out.vertices.back()).norm() > tol)
+      out.vertices.push_back(v);
+  }
+  while (out.vertices.size() > 3 && (out.vertices.back() - out.vertices.front()).norm() <= tol)
+    out.vertices.pop_back();
+  return out.vertices.size() >= 3 ? out : p;
+}
+
+}  // namespace
+
+GeneratedBlocks generate_blocks(const DomainSpec& spec, const std::string& file) {
+  GeneratedBlocks out;
+  try {
+    validate(spec.domain);
+    const std::vector<JointTrace> traces =
+        generate_traces(spec.joint_sets, spec.joints, bbox_of(spec.domain));
+    CutOptions options;
+    options.min_block_area =
+        spec.min_block_area.value_or(suggested_min_block_area(spec.joint_sets));
+    const BlockCut cut = cut_blocks(spec.domain, traces, options);
+    out.stats = cut.stats;
+
+    // The material along each pair of touching cut blocks: the kind covering most of their edge.
+    std::map<std::pair<int, int>, std::map<std::string, double>> lengths;
+    for (const CutEdge& e : cut.edges) {
+      if (e.left < 0 || e.right < 0)
+        continue;
+      const std::string material = e.kind == EdgeKind::joint && e.trace >= 0
+                                       ? traces[static_cast<std::size_t>(e.trace)].material
+                                       : std::string();
+      const double length = (cut.vertices[static_cast<std::size_t>(e.b)] -
+                             cut.vertices[static_cast<std::size_t>(e.a)])
+                                .norm();
+      lengths[{std::min(e.left, e.right), std::max(e.left, e.right)}][material] += length;
+    }
+    for (const auto& [pair, by_material] : lengths) {
+      const auto longest =
+          std::max_element(by_material.begin(), by_material.end(),
+                           [](const auto& a, const auto& b) { return a.second < b.second; });
+      out.joint_between_parents[pair] = longest->first;
+    }
+
+    const double tol = 2.0 * model_tolerance(bbox_of(spec.domain));
+    std::vector<Polygon> polygons = block_polygons(cut);
+    for (Polygon& p : polygons)
+      p = without_short_edges(p, tol);
+    std::vector<VoronoiCell> cells;
+    if (spec.subdivision) {
+      const double size = spec.subdivision->target_size;
+      cells = subdivide_large_blocks(polygons, 2.0 * size * size, *spec.subdivision);
+    } else {
+      for (std::size_t k = 0; k < polygons.size(); ++k)
+        cells.push_back({polygons[k], static_cast<int>(k)});
+    }
+    std::vector<int> cells_of(polygons.size(), 0);
+    for (VoronoiCell& c : cells) {
+      // A clipped Voronoi cell can collapse to a segment (zero area, corners repeated): it holds
+      // no rock, so it is left out (and counted).
+      c.polygon = without_short_edges(c.polygon, tol);
+      if (c.polygon.size() < 3 || std::abs(signed_area(c.polygon)) <= tol * tol) {
+        ++out.degenerate_cells;
+        continue;
+      }
+      const CutBlock& parent = cut.blocks[static_cast<std::size_t>(c.parent)];
+      const std::string& material =
+          parent.zone >= 0 ? spec.domain.zones[static_cast<std::size_t>(parent.zone)].material
+                           : spec.material;
+      const int k = static_cast<int>(out.blocks.size());
+      out.blocks.push_back(
+          {c.polygon, material, {spec.source.line, "domain block " + std::to_string(k)}});
+      out.parent.push_back(c.parent);
+      ++cells_of[static_cast<std::size_t>(c.parent)];
+    }
+    out.subdivided = static_cast<int>(
+        std::count_if(cells_of.begin(), cells_of.end(), [](int n) { return n > 1; }));
+  } catch (const GeometryError& e) {
+    throw InputError(file, line_of(spec, e.item()), e.item(), e.message());
+  }
+  if (out.blocks.empty())
+    throw InputError(file, spec.source, "the domain yields no block");
+  return out;
+}
+
+}  // namespace bimrock
