@@ -18,7 +18,10 @@ std::vector<JointTrace> three_sets(const Domain& d, double spacing) {
   const std::vector<JointSet> sets{
       {.material = "a", .dip_deg = 15.0, .spacing = spacing, .origin = Vec2(0.13, 0.29) * spacing},
       {.material = "b", .dip_deg = 75.0, .spacing = spacing, .origin = Vec2(0.41, 0.07) * spacing},
-      {.material = "c", .dip_deg = 140.0, .spacing = spacing, .origin = Vec2(0.23, 0.37) * spacing}};
+      {.material = "c",
+       .dip_deg = 140.0,
+       .spacing = spacing,
+       .origin = Vec2(0.23, 0.37) * spacing}};
   return generate_traces(sets, {}, bbox_of(d));
 }
 
@@ -39,8 +42,8 @@ void BM_CutBlocks(benchmark::State& state) {
   state.counters["traces"] = static_cast<double>(traces.size());
   state.counters["blocks"] = static_cast<double>(n_blocks);
   state.counters["vertices"] = static_cast<double>(n_vertices);
-  state.counters["blocks_per_s"] = benchmark::Counter(static_cast<double>(n_blocks),
-                                                      benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["blocks_per_s"] = benchmark::Counter(
+      static_cast<double>(n_blocks), benchmark::Counter::kIsIterationInvariantRate);
 }
 
 BENCHMARK(BM_CutBlocks)->Arg(100)->Arg(2500)->Arg(10000)->Arg(40000)->Unit(benchmark::kMillisecond);

@@ -16,7 +16,8 @@ namespace bimrock::test {
 
 inline double total_area(const std::vector<Polygon>& blocks) {
   double a = 0.0;
-  for (const Polygon& p : blocks) a += signed_area(p);
+  for (const Polygon& p : blocks)
+    a += signed_area(p);
   return a;
 }
 
@@ -39,7 +40,8 @@ inline bool interiors_overlap(const Polygon& a, const Polygon& b) {
       const bool all_outside = std::none_of(q.vertices.begin(), q.vertices.end(), [&](auto& v) {
         return CGAL::orientation(ea, eb, K::Point_2(v.x(), v.y())) == CGAL::LEFT_TURN;
       });
-      if (all_outside) return true;
+      if (all_outside)
+        return true;
     }
     return false;
   };
@@ -62,7 +64,8 @@ inline void expect_no_overlap_beyond(const std::vector<Polygon>& blocks, double 
 // The byte-level image of a cut, to compare two runs.
 inline std::vector<unsigned char> bytes_of(const BlockCut& cut) {
   std::vector<unsigned char> out(cut.vertices.size() * sizeof(Vec2));
-  if (!out.empty()) std::memcpy(out.data(), cut.vertices.data(), out.size());
+  if (!out.empty())
+    std::memcpy(out.data(), cut.vertices.data(), out.size());
   for (const CutBlock& b : cut.blocks) {
     const auto* p = reinterpret_cast<const unsigned char*>(b.vertex_ids.data());
     out.insert(out.end(), p, p + b.vertex_ids.size() * sizeof(int));

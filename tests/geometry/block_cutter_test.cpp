@@ -29,7 +29,8 @@ BlockCut cut(const Domain& d, const std::vector<JointSet>& sets,
 
 std::vector<double> sorted_areas(const std::vector<Polygon>& blocks) {
   std::vector<double> a;
-  for (const Polygon& p : blocks) a.push_back(signed_area(p));
+  for (const Polygon& p : blocks)
+    a.push_back(signed_area(p));
   std::sort(a.begin(), a.end());
   return a;
 }
@@ -44,7 +45,8 @@ int count_kind(const BlockCut& c, EdgeKind kind) {
 void expect_edges_match_shared_edges(const BlockCut& c, double tol) {
   double interior = 0.0;
   for (const CutEdge& e : c.edges)
-    if (e.left >= 0 && e.right >= 0) interior += (c.vertices[e.b] - c.vertices[e.a]).norm();
+    if (e.left >= 0 && e.right >= 0)
+      interior += (c.vertices[e.b] - c.vertices[e.a]).norm();
   double shared = 0.0;
   for (const SharedEdge& s : find_shared_edges(block_polygons(c), tol))
     shared += s.segment.length();
@@ -61,8 +63,10 @@ TEST(BlockCutter, SquareCutByTwoOrthogonalSetsGivesTheGrid) {
   const BlockCut c = cut({rect(0, 0, 4, 3), {}, {}}, {kBedding, kCross});
   const auto blocks = block_polygons(c);
   ASSERT_EQ(blocks.size(), 12u);
-  for (double a : sorted_areas(blocks)) EXPECT_EQ(a, 1.0);
-  for (const Polygon& p : blocks) EXPECT_EQ(p.size(), 4u);
+  for (double a : sorted_areas(blocks))
+    EXPECT_EQ(a, 1.0);
+  for (const Polygon& p : blocks)
+    EXPECT_EQ(p.size(), 4u);
   test::expect_convex_ccw(blocks, 1e-12);
   test::expect_no_overlap_exact(blocks);
   EXPECT_EQ(count_kind(c, EdgeKind::joint), 17);
@@ -79,7 +83,8 @@ TEST(BlockCutter, JointEdgesCarryTheirSetAndMaterial) {
   const auto traces = generate_traces(sets, {}, bbox_of(d));
   const BlockCut c = cut_blocks(d, traces);
   for (const CutEdge& e : c.edges) {
-    if (e.kind != EdgeKind::joint) continue;
+    if (e.kind != EdgeKind::joint)
+      continue;
     const JointTrace& t = traces[e.trace];
     const bool horizontal = c.vertices[e.a].y() == c.vertices[e.b].y();
     EXPECT_EQ(t.material, horizontal ? "bedding" : "cross");
@@ -95,8 +100,12 @@ TEST(BlockCutter, StaggeredSetGivesABrickWall) {
   // half a period: rows alternate head joints at x = 0, 4, 8 and x = 2, 6. On [0,8] x [0,4]:
   // rows 0 and 2 hold 2 bricks of 4, rows 1 and 3 hold 2 half bricks + 1 brick: 10 blocks,
   // exactly brick_pattern(2, 4, 4, 1, rows).
-  JointSet head{.material = "head", .dip_deg = 90.0, .spacing = 2.0, .trace_length = 1.0,
-                .gap = 1.0, .staggered = true};
+  JointSet head{.material = "head",
+                .dip_deg = 90.0,
+                .spacing = 2.0,
+                .trace_length = 1.0,
+                .gap = 1.0,
+                .staggered = true};
   const BlockCut c = cut({rect(0, 0, 8, 4), {}, {}}, {kBedding, head});
   const auto blocks = block_polygons(c);
   ASSERT_EQ(blocks.size(), 10u);
@@ -113,8 +122,12 @@ TEST(BlockCutter, DanglingTraceEndsAreExtendedAsRockBridges) {
   // y in [0.25, 0.75] + k (length 0.5, gap 0.5), so every trace ends inside rock at both ends.
   // Each end is extended to the nearest bed: 4 joints x 2 rows x 2 ends = 16 rock bridges, and
   // each row splits into 5 blocks (widths 0.5, 1, 1, 1, 0.5): 10 blocks, area 8.
-  JointSet part{.material = "cross", .dip_deg = 90.0, .spacing = 1.0, .origin = {0.5, 0.25},
-                .trace_length = 0.5, .gap = 0.5};
+  JointSet part{.material = "cross",
+                .dip_deg = 90.0,
+                .spacing = 1.0,
+                .origin = {0.5, 0.25},
+                .trace_length = 0.5,
+                .gap = 0.5};
   const BlockCut c = cut({rect(0, 0, 4, 2), {}, {}}, {kBedding, part});
   const auto blocks = block_polygons(c);
   ASSERT_EQ(blocks.size(), 10u);
@@ -126,7 +139,8 @@ TEST(BlockCutter, DanglingTraceEndsAreExtendedAsRockBridges) {
   test::expect_convex_ccw(blocks, 1e-12);
   test::expect_no_overlap_exact(blocks);
   // Each vertical line is one straight side made of rock bridge, joint, rock bridge.
-  for (const Polygon& p : blocks) EXPECT_EQ(p.size(), 4u);
+  for (const Polygon& p : blocks)
+    EXPECT_EQ(p.size(), 4u);
 }
 
 TEST(BlockCutter, NonConvexFaceIsPartitionedIntoPiecesOfOneFace) {
@@ -140,8 +154,9 @@ TEST(BlockCutter, NonConvexFaceIsPartitionedIntoPiecesOfOneFace) {
   EXPECT_EQ(c.stats.n_faces, 1);
   EXPECT_EQ(c.stats.n_partitioned_faces, 1);
   ASSERT_EQ(count_kind(c, EdgeKind::partition), 1);
-  const auto diagonal = std::find_if(c.edges.begin(), c.edges.end(),
-                                     [](const CutEdge& e) { return e.kind == EdgeKind::partition; });
+  const auto diagonal = std::find_if(c.edges.begin(), c.edges.end(), [](const CutEdge& e) {
+    return e.kind == EdgeKind::partition;
+  });
   EXPECT_EQ(std::min(diagonal->left, diagonal->right), 0);
   EXPECT_EQ(std::max(diagonal->left, diagonal->right), 1);
   EXPECT_EQ(test::total_area(blocks), 3.0);
@@ -156,13 +171,27 @@ TEST(BlockCutter, NonPersistentJointsInANonConvexDomainConserveArea) {
   const Domain d{{{{0, 0}, {10, 0}, {10, 5}, {5, 5}, {5, 10}, {0, 10}}},
                  {{{{2.5, 1.5}, {3.5, 2.5}, {2.5, 3.5}, {1.5, 2.5}}}},
                  {}};
-  const std::vector<JointSet> sets{
-      {.material = "a", .dip_deg = 20.0, .spacing = 0.7, .origin = {0.1, 0.2},
-       .spacing_variation = {Distribution::normal, 0.1}, .seed = 1},
-      {.material = "b", .dip_deg = 95.0, .spacing = 1.1, .trace_length = 2.0, .gap = 0.8,
-       .staggered = true, .dip_variation = {Distribution::uniform, 5.0}, .seed = 2},
-      {.material = "c", .dip_deg = 140.0, .spacing = 1.7, .trace_length = 3.0, .gap = 1.5,
-       .spacing_variation = {Distribution::uniform, 0.3}, .seed = 3}};
+  const std::vector<JointSet> sets{{.material = "a",
+                                    .dip_deg = 20.0,
+                                    .spacing = 0.7,
+                                    .origin = {0.1, 0.2},
+                                    .spacing_variation = {Distribution::normal, 0.1},
+                                    .seed = 1},
+                                   {.material = "b",
+                                    .dip_deg = 95.0,
+                                    .spacing = 1.1,
+                                    .trace_length = 2.0,
+                                    .gap = 0.8,
+                                    .staggered = true,
+                                    .dip_variation = {Distribution::uniform, 5.0},
+                                    .seed = 2},
+                                   {.material = "c",
+                                    .dip_deg = 140.0,
+                                    .spacing = 1.7,
+                                    .trace_length = 3.0,
+                                    .gap = 1.5,
+                                    .spacing_variation = {Distribution::uniform, 0.3},
+                                    .seed = 3}};
   const BlockCut c = cut(d, sets);
   const auto blocks = block_polygons(c);
   EXPECT_NEAR(test::total_area(blocks), 73.0, 73.0 * 1e-12);
@@ -185,7 +214,8 @@ TEST(BlockCutter, TunnelIsExcludedAndJoinedByTwoVerticalCuts) {
   // 100 - 2 sqrt(2) R^2.
   Polygon octagon;
   for (int k = 0; k < 8; ++k)
-    octagon.vertices.emplace_back(5.0 + 0.8 * std::cos(k * M_PI / 4), 5.0 + 0.8 * std::sin(k * M_PI / 4));
+    octagon.vertices.emplace_back(5.0 + 0.8 * std::cos(k * M_PI / 4),
+                                  5.0 + 0.8 * std::sin(k * M_PI / 4));
   const Domain d{rect(0, 0, 10, 10), {octagon}, {}};
   JointSet x{.material = "x", .dip_deg = 90.0, .spacing = 2.0};
   JointSet y{.material = "y", .dip_deg = 0.0, .spacing = 2.0};
@@ -197,11 +227,13 @@ TEST(BlockCutter, TunnelIsExcludedAndJoinedByTwoVerticalCuts) {
   const double tol = model_tolerance(bbox_of(d));
   test::expect_convex_ccw(blocks, tol);
   test::expect_no_overlap_beyond(blocks, tol);
-  for (const Polygon& p : blocks) EXPECT_GT((centroid(p) - Vec2(5, 5)).norm(), 0.8 * std::cos(M_PI / 8));
+  for (const Polygon& p : blocks)
+    EXPECT_GT((centroid(p) - Vec2(5, 5)).norm(), 0.8 * std::cos(M_PI / 8));
   // Every octagon side is a boundary piece: its 8 sides (or more, where cuts end on them).
   int on_octagon = 0;
   for (const CutEdge& e : c.edges)
-    if (e.kind == EdgeKind::boundary && (c.vertices[e.a] - Vec2(5, 5)).norm() < 1.0) ++on_octagon;
+    if (e.kind == EdgeKind::boundary && (c.vertices[e.a] - Vec2(5, 5)).norm() < 1.0)
+      ++on_octagon;
   EXPECT_EQ(on_octagon, 8);  // both cuts end on octagon vertices: no side is split
 }
 
@@ -213,7 +245,8 @@ TEST(BlockCutter, TunnelAlignedWithTheGridRemovesOneCell) {
   const BlockCut c = cut(d, {x, y});
   const auto blocks = block_polygons(c);
   ASSERT_EQ(blocks.size(), 24u);
-  for (double a : sorted_areas(blocks)) EXPECT_EQ(a, 4.0);
+  for (double a : sorted_areas(blocks))
+    EXPECT_EQ(a, 4.0);
   test::expect_no_overlap_exact(blocks);
   EXPECT_EQ(c.stats.n_hole_cuts, 0);
 }
@@ -224,8 +257,10 @@ TEST(BlockCutter, SliversAreMergedIntoTheirLongestNeighbour) {
   // both merge: 3 columns x 2 rows = 6 blocks, area 9, and each merge turns one joint piece
   // (a side of the strip, 1.5 m) into intact rock.
   const Domain d{rect(0, 0, 3, 3), {}, {}};
-  const std::vector<Joint> joints{{"j", {{1, -1}, {1, 4}}},     {"j", {{2, -1}, {2, 4}}},
-                                  {"j", {{-1, 1.5}, {4, 1.5}}}, {"j", {{2.001, -1}, {2.001, 4}}}};
+  const std::vector<Joint> joints{{"j", {{1, -1}, {1, 4}}},
+                                  {"j", {{2, -1}, {2, 4}}},
+                                  {"j", {{-1, 1.5}, {4, 1.5}}},
+                                  {"j", {{2.001, -1}, {2.001, 4}}}};
   const auto traces = generate_traces({}, joints, bbox_of(d));
   const BlockCut raw = cut_blocks(d, traces);
   EXPECT_EQ(raw.blocks.size(), 8u);
@@ -236,7 +271,8 @@ TEST(BlockCutter, SliversAreMergedIntoTheirLongestNeighbour) {
   EXPECT_EQ(c.stats.n_slivers_kept, 0);
   EXPECT_EQ(c.stats.n_joint_edges_removed, 2);
   EXPECT_NEAR(test::total_area(blocks), 9.0, 1e-12 * 9.0);
-  for (double a : sorted_areas(blocks)) EXPECT_GE(a, 0.01);
+  for (double a : sorted_areas(blocks))
+    EXPECT_GE(a, 0.01);
   test::expect_convex_ccw(blocks, model_tolerance(bbox_of(d)));
 }
 
@@ -246,9 +282,8 @@ TEST(BlockCutter, NearlyConcurrentJointsLeaveNoSliver) {
   // (1,1) of the top-right one: 7 blocks. The exact arrangement finds that triangle; the merge
   // puts it back into the top-right quarter across its longest side: 6 blocks.
   const Domain d{rect(0, 0, 2, 2), {}, {}};
-  const std::vector<Joint> joints{{"j", {{1, -1}, {1, 3}}},
-                                  {"j", {{-1, 1}, {3, 1}}},
-                                  {"j", {{-1, 3 + 1e-7}, {3, -1 + 1e-7}}}};
+  const std::vector<Joint> joints{
+      {"j", {{1, -1}, {1, 3}}}, {"j", {{-1, 1}, {3, 1}}}, {"j", {{-1, 3 + 1e-7}, {3, -1 + 1e-7}}}};
   const auto traces = generate_traces({}, joints, bbox_of(d));
   EXPECT_EQ(cut_blocks(d, traces).blocks.size(), 7u);
   const BlockCut c = cut_blocks(d, traces, {.min_block_area = 1e-6});
@@ -280,12 +315,19 @@ TEST(BlockCutter, ZoneOutlinesCutBlocksAndNameTheirZone) {
 TEST(BlockCutter, SameSeedGivesByteIdenticalBlocksAndADifferentSeedDoesNot) {
   const Domain d{rect(0, 0, 12, 8), {}, {}};
   const auto sets_with = [](std::uint64_t seed) {
-    return std::vector<JointSet>{
-        {.material = "a", .dip_deg = 30.0, .spacing = 1.0,
-         .spacing_variation = {Distribution::normal, 0.2}, .dip_variation = {Distribution::normal, 3.0},
-         .seed = seed},
-        {.material = "b", .dip_deg = 110.0, .spacing = 1.5, .trace_length = 3.0, .gap = 1.0,
-         .spacing_variation = {Distribution::uniform, 0.3}, .seed = seed + 100}};
+    return std::vector<JointSet>{{.material = "a",
+                                  .dip_deg = 30.0,
+                                  .spacing = 1.0,
+                                  .spacing_variation = {Distribution::normal, 0.2},
+                                  .dip_variation = {Distribution::normal, 3.0},
+                                  .seed = seed},
+                                 {.material = "b",
+                                  .dip_deg = 110.0,
+                                  .spacing = 1.5,
+                                  .trace_length = 3.0,
+                                  .gap = 1.0,
+                                  .spacing_variation = {Distribution::uniform, 0.3},
+                                  .seed = seed + 100}};
   };
   const CutOptions o{.min_block_area = 0.01};
   const auto a = test::bytes_of(cut(d, sets_with(5), {}, o));
@@ -309,7 +351,8 @@ TEST(BlockCutter, BlocksShareVertexCoordinatesExactly) {
   }
   // In a simple arrangement of lines an inner crossing is a corner of 4 blocks.
   int four = 0;
-  for (const auto& [id, n] : uses) four += n == 4 ? 1 : 0;
+  for (const auto& [id, n] : uses)
+    four += n == 4 ? 1 : 0;
   EXPECT_GT(four, 0);
   const double tol = model_tolerance(bbox_of(d));
   test::expect_no_overlap_beyond(block_polygons(c), tol);
@@ -331,19 +374,24 @@ TEST(BlockCutter, ManyCorneredRegionsUseTheApproximatePartition) {
   EXPECT_EQ(c.stats.n_hole_cuts, 2);
   EXPECT_EQ(c.stats.n_faces, 2);
   EXPECT_EQ(c.stats.n_partitioned_faces, 2);
-  EXPECT_NEAR(test::total_area(blocks), 100.0 - 0.5 * n * 4.0 * std::sin(2 * M_PI / n), 1e-12 * 100);
+  EXPECT_NEAR(test::total_area(blocks), 100.0 - 0.5 * n * 4.0 * std::sin(2 * M_PI / n),
+              1e-12 * 100);
   const double tol = model_tolerance(bbox_of(d));
   test::expect_convex_ccw(blocks, tol);
   test::expect_no_overlap_beyond(blocks, tol);
-  for (const CutBlock& b : c.blocks) EXPECT_TRUE(b.face == 0 || b.face == 1);
+  for (const CutBlock& b : c.blocks)
+    EXPECT_TRUE(b.face == 0 || b.face == 1);
 }
 
 // Random domains (a star-shaped outline, up to 3 polygonal tunnels, a zone) cut by 1 to 3 random
 // sets, persistent or not, with random spacing and dip: whatever the cutter meets, the blocks
-// tile the domain (area to 1e-12, no overlap beyond the model tolerance) and are convex and
-// counter-clockwise within it.
-// @note Short edges are not checked: where joints nearly meet, a block may keep an edge shorter
-//       than the tolerance (check_convex_polygon calls that a duplicate vertex); see the header.
+// tile the domain (area to 1e-12, no overlap beyond the model tolerance), and every block of at
+// least min_block_area is convex and counter-clockwise within it and knows its zone.
+// @note Not checked, and known to happen where joints nearly meet: short edges
+// (check_convex_polygon
+//       calls an edge shorter than the tolerance a duplicate vertex), and slivers that no convex
+//       merge could absorb, down to zero width in doubles. The latter must be counted in
+//       n_small_blocks, never hidden.
 class RandomCuts : public ::testing::TestWithParam<int> {};
 
 TEST_P(RandomCuts, TileTheDomainWithConvexBlocks) {
@@ -375,7 +423,9 @@ TEST_P(RandomCuts, TileTheDomainWithConvexBlocks) {
   std::vector<JointSet> sets;
   const int n_sets = 1 + static_cast<int>(r.uniform(0, 3));
   for (int k = 0; k < n_sets; ++k) {
-    JointSet s{.material = "j", .dip_deg = r.uniform(0, 180), .spacing = r.uniform(0.3, 2.0),
+    JointSet s{.material = "j",
+               .dip_deg = r.uniform(0, 180),
+               .spacing = r.uniform(0.3, 2.0),
                .origin = {r.uniform(0, 1), r.uniform(0, 1)},
                .seed = static_cast<std::uint64_t>(GetParam())};
     if (r.uniform01() < 0.6) {
@@ -383,8 +433,10 @@ TEST_P(RandomCuts, TileTheDomainWithConvexBlocks) {
       s.gap = r.uniform(0.2, 2);
       s.staggered = r.uniform01() < 0.5;
     }
-    if (r.uniform01() < 0.5) s.dip_variation = {Distribution::normal, 5};
-    if (r.uniform01() < 0.5) s.spacing_variation = {Distribution::uniform, 0.2 * s.spacing};
+    if (r.uniform01() < 0.5)
+      s.dip_variation = {Distribution::normal, 5};
+    if (r.uniform01() < 0.5)
+      s.spacing_variation = {Distribution::uniform, 0.2 * s.spacing};
     sets.push_back(s);
   }
   const BlockCut c = cut(d, sets, {}, {.min_block_area = 0.01});
@@ -392,12 +444,19 @@ TEST_P(RandomCuts, TileTheDomainWithConvexBlocks) {
   EXPECT_NEAR(test::total_area(blocks), area(d), 1e-12 * area(d));
   const double tol = model_tolerance(bbox_of(d));
   test::expect_no_overlap_beyond(blocks, tol);
+  int small = 0;
   for (std::size_t k = 0; k < blocks.size(); ++k) {
+    if (signed_area(blocks[k]) < 0.01) {
+      ++small;
+      continue;
+    }
     const PolygonCheck check = check_convex_polygon(blocks[k], tol);
-    if (check.defect != PolygonDefect::duplicate_vertex)
+    if (check.defect != PolygonDefect::duplicate_vertex) {
       EXPECT_EQ(check.defect, PolygonDefect::none) << "block " << k << ": " << describe(check);
+    }
+    EXPECT_EQ(c.blocks[k].zone, zone_containing(d, centroid(blocks[k])));
   }
-  for (const CutBlock& b : c.blocks) EXPECT_EQ(b.zone, zone_containing(d, centroid(b.polygon)));
+  EXPECT_EQ(small, c.stats.n_small_blocks);
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, RandomCuts, ::testing::Range(0, 24));

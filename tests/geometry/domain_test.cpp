@@ -13,7 +13,9 @@ Polygon rect(double x0, double y0, double x1, double y1) {
 }
 
 // An L: the square [0,10]^2 less its top-right quarter [5,10]^2 (area 100 - 25 = 75).
-Polygon l_shape() { return {{{0, 0}, {10, 0}, {10, 5}, {5, 5}, {5, 10}, {0, 10}}}; }
+Polygon l_shape() {
+  return {{{0, 0}, {10, 0}, {10, 5}, {5, 5}, {5, 10}, {0, 10}}};
+}
 
 std::string item_of(const Domain& d) {
   try {
@@ -60,32 +62,49 @@ TEST_P(BadDomains, AreNamedWithTheItem) {
 INSTANTIATE_TEST_SUITE_P(
     Validation, BadDomains,
     ::testing::Values(
-        BadDomain{"bow_tie", {{{{0, 0}, {2, 2}, {2, 0}, {0, 2}}}, {}, {}}, "domain.outline",
+        BadDomain{"bow_tie",
+                  {{{{0, 0}, {2, 2}, {2, 0}, {0, 2}}}, {}, {}},
+                  "domain.outline",
                   "intersects itself"},
-        BadDomain{"collinear", {{{{0, 0}, {1, 0}, {2, 0}}}, {}, {}}, "domain.outline",
-                  "folds back"},
-        BadDomain{"clockwise", {{{{0, 0}, {0, 1}, {1, 1}, {1, 0}}}, {}, {}}, "domain.outline",
+        BadDomain{
+            "collinear", {{{{0, 0}, {1, 0}, {2, 0}}}, {}, {}}, "domain.outline", "folds back"},
+        BadDomain{"clockwise",
+                  {{{{0, 0}, {0, 1}, {1, 1}, {1, 0}}}, {}, {}},
+                  "domain.outline",
                   "clockwise"},
         BadDomain{"two_vertices", {{{{0, 0}, {1, 0}}}, {}, {}}, "domain.outline", "3 vertices"},
-        BadDomain{"repeated_vertex", {{{{0, 0}, {1, 0}, {1, 0}, {0, 1}}}, {}, {}},
-                  "domain.outline", "repeats"},
-        BadDomain{"spike", {{{{0, 0}, {2, 0}, {1, 0}, {1, 1}}}, {}, {}}, "domain.outline",
-                  "folds back"},
-        BadDomain{"hole_outside", {rect(0, 0, 10, 10), {rect(1, 1, 2, 2), rect(11, 1, 12, 2)}, {}},
-                  "domain.holes[1]", "outside"},
-        BadDomain{"hole_crossing", {rect(0, 0, 10, 10), {rect(8, 1, 12, 2)}, {}},
-                  "domain.holes[0]", "crosses the domain outline"},
-        BadDomain{"hole_in_the_notch", {l_shape(), {rect(6, 6, 7, 7)}, {}}, "domain.holes[0]",
+        BadDomain{"repeated_vertex",
+                  {{{{0, 0}, {1, 0}, {1, 0}, {0, 1}}}, {}, {}},
+                  "domain.outline",
+                  "repeats"},
+        BadDomain{
+            "spike", {{{{0, 0}, {2, 0}, {1, 0}, {1, 1}}}, {}, {}}, "domain.outline", "folds back"},
+        BadDomain{"hole_outside",
+                  {rect(0, 0, 10, 10), {rect(1, 1, 2, 2), rect(11, 1, 12, 2)}, {}},
+                  "domain.holes[1]",
                   "outside"},
-        BadDomain{"holes_overlap", {rect(0, 0, 10, 10), {rect(1, 1, 3, 3), rect(2, 2, 4, 4)}, {}},
-                  "domain.holes[1]", "overlaps domain.holes[0]"},
-        BadDomain{"hole_in_hole", {rect(0, 0, 10, 10), {rect(1, 1, 5, 5), rect(2, 2, 3, 3)}, {}},
-                  "domain.holes[1]", "overlaps domain.holes[0]"},
-        BadDomain{"holes_touch", {rect(0, 0, 10, 10), {rect(1, 1, 3, 3), rect(3, 1, 4, 3)}, {}},
-                  "domain.holes[1]", "touches"},
+        BadDomain{"hole_crossing",
+                  {rect(0, 0, 10, 10), {rect(8, 1, 12, 2)}, {}},
+                  "domain.holes[0]",
+                  "crosses the domain outline"},
+        BadDomain{
+            "hole_in_the_notch", {l_shape(), {rect(6, 6, 7, 7)}, {}}, "domain.holes[0]", "outside"},
+        BadDomain{"holes_overlap",
+                  {rect(0, 0, 10, 10), {rect(1, 1, 3, 3), rect(2, 2, 4, 4)}, {}},
+                  "domain.holes[1]",
+                  "overlaps domain.holes[0]"},
+        BadDomain{"hole_in_hole",
+                  {rect(0, 0, 10, 10), {rect(1, 1, 5, 5), rect(2, 2, 3, 3)}, {}},
+                  "domain.holes[1]",
+                  "overlaps domain.holes[0]"},
+        BadDomain{"holes_touch",
+                  {rect(0, 0, 10, 10), {rect(1, 1, 3, 3), rect(3, 1, 4, 3)}, {}},
+                  "domain.holes[1]",
+                  "touches"},
         BadDomain{"bad_zone",
                   {rect(0, 0, 10, 10), {}, {{"a", rect(0, 0, 1, 1)}, {"b", {{{0, 0}, {1, 0}}}}}},
-                  "domain.zones[1]", "3 vertices"}),
+                  "domain.zones[1]",
+                  "3 vertices"}),
     [](const auto& p) { return std::string(p.param.name); });
 
 }  // namespace

@@ -20,8 +20,8 @@ BBox box_of(double x0, double y0, double x1, double y1) {
 
 std::vector<double> coordinates(const std::vector<JointTrace>& traces) {
   std::vector<double> c;
-  for (const JointTrace& t : traces) c.insert(c.end(), {t.segment.a.x(), t.segment.a.y(),
-                                                        t.segment.b.x(), t.segment.b.y()});
+  for (const JointTrace& t : traces)
+    c.insert(c.end(), {t.segment.a.x(), t.segment.a.y(), t.segment.b.x(), t.segment.b.y()});
   return c;
 }
 
@@ -64,7 +64,8 @@ TEST(JointSet, TracesAndGapsAlternateAlongEachJoint) {
   const double m = trace_margin(box, s);
   std::vector<JointTrace> on_zero;
   for (const JointTrace& t : generate_traces(s, 0, box))
-    if (t.joint == 0) on_zero.push_back(t);
+    if (t.joint == 0)
+      on_zero.push_back(t);
   ASSERT_EQ(on_zero.size(), 7u);
   EXPECT_EQ(on_zero.front().segment.a.x(), -5.0);
   EXPECT_EQ(on_zero.front().segment.b.x(), -2.0);
@@ -88,9 +89,16 @@ TEST(JointSet, StaggeredJointsShiftByHalfAPeriod) {
 }
 
 JointSet varied_set(std::uint64_t seed, Distribution d) {
-  return {.material = "j", .dip_deg = 30.0, .spacing = 0.5, .origin = {1.0, 2.0},
-          .trace_length = 2.0, .gap = 1.0, .staggered = true,
-          .spacing_variation = {d, 0.1}, .dip_variation = {d, 5.0}, .seed = seed};
+  return {.material = "j",
+          .dip_deg = 30.0,
+          .spacing = 0.5,
+          .origin = {1.0, 2.0},
+          .trace_length = 2.0,
+          .gap = 1.0,
+          .staggered = true,
+          .spacing_variation = {d, 0.1},
+          .dip_variation = {d, 5.0},
+          .seed = seed};
 }
 
 TEST(JointSet, SameSeedGivesByteIdenticalTraces) {
@@ -106,11 +114,12 @@ TEST(JointSet, SameSeedGivesByteIdenticalTraces) {
 TEST(JointSet, SpacingVariationHasTheGivenMeanAndSpread) {
   // Horizontal persistent joints over 2000 m: the mean spacing of ~4000 draws is 0.5 within
   // 4 standard errors (0.1 / sqrt(4000) = 0.0016), and their spread is 0.1 within 5%.
-  JointSet s{.dip_deg = 0.0, .spacing = 0.5,
-             .spacing_variation = {Distribution::normal, 0.1}, .seed = 3};
+  JointSet s{
+      .dip_deg = 0.0, .spacing = 0.5, .spacing_variation = {Distribution::normal, 0.1}, .seed = 3};
   const auto traces = generate_traces(s, 0, box_of(0, 0, 1, 2000));
   std::vector<double> y;
-  for (const JointTrace& t : traces) y.push_back(t.segment.a.y());
+  for (const JointTrace& t : traces)
+    y.push_back(t.segment.a.y());
   std::sort(y.begin(), y.end());
   double sum = 0.0;
   double sum2 = 0.0;

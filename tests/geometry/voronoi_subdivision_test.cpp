@@ -18,14 +18,16 @@ const Polygon kSquare{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}};
 
 std::vector<Polygon> polygons(const std::vector<VoronoiCell>& cells) {
   std::vector<Polygon> p;
-  for (const VoronoiCell& c : cells) p.push_back(c.polygon);
+  for (const VoronoiCell& c : cells)
+    p.push_back(c.polygon);
   return p;
 }
 
 TEST(VoronoiSubdivision, JitteredGridGivesOneConvexCellPerSeed) {
   const auto cells = voronoi_subdivision(kSquare, 7, {.target_size = 2.0, .seed = 1});
   EXPECT_EQ(cells.size(), 25u);
-  for (const VoronoiCell& c : cells) EXPECT_EQ(c.parent, 7);
+  for (const VoronoiCell& c : cells)
+    EXPECT_EQ(c.parent, 7);
   const auto p = polygons(cells);
   EXPECT_NEAR(test::total_area(p), 100.0, 1e-12 * 100.0);
   test::expect_convex_ccw(p, 1e-8);
@@ -35,8 +37,8 @@ TEST(VoronoiSubdivision, JitteredGridGivesOneConvexCellPerSeed) {
 TEST(VoronoiSubdivision, RandomSeedsGiveAreaOverTargetSquaredCells) {
   // round(100 / 2^2) = 25 seeds, uniform in the square.
   const auto cells = voronoi_subdivision(
-      kSquare, 0, {.target_size = 2.0, .pattern = SeedPattern::random, .seed = 4,
-                   .min_cell_fraction = 0.0});
+      kSquare, 0,
+      {.target_size = 2.0, .pattern = SeedPattern::random, .seed = 4, .min_cell_fraction = 0.0});
   EXPECT_EQ(cells.size(), 25u);
   EXPECT_NEAR(test::total_area(polygons(cells)), 100.0, 1e-12 * 100.0);
   test::expect_convex_ccw(polygons(cells), 1e-8);
@@ -46,7 +48,8 @@ TEST(VoronoiSubdivision, SameSeedSameCellsOtherSeedOtherCells) {
   const auto bytes = [](const std::vector<VoronoiCell>& cells) {
     std::vector<double> v;
     for (const VoronoiCell& c : cells)
-      for (const Vec2& p : c.polygon.vertices) v.insert(v.end(), {p.x(), p.y()});
+      for (const Vec2& p : c.polygon.vertices)
+        v.insert(v.end(), {p.x(), p.y()});
     return v;
   };
   const VoronoiOptions o{.target_size = 1.5, .seed = 9};

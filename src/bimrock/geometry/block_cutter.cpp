@@ -23,10 +23,13 @@ class Extractor {
   Extractor(Arrangement& arr, double tol, BlockCut& out) : arr_(arr), tol_(tol), out_(out) {}
 
   void run() {
-    for (auto v = arr_.vertices_begin(); v != arr_.vertices_end(); ++v) v->data() = -1;
-    for (auto h = arr_.halfedges_begin(); h != arr_.halfedges_end(); ++h) h->data() = -1;
+    for (auto v = arr_.vertices_begin(); v != arr_.vertices_end(); ++v)
+      v->data() = -1;
+    for (auto h = arr_.halfedges_begin(); h != arr_.halfedges_end(); ++h)
+      h->data() = -1;
     for (auto f = arr_.faces_begin(); f != arr_.faces_end(); ++f)
-      if (f->data().inside) add_block(f);
+      if (f->data().inside)
+        add_block(f);
     add_edges();
   }
 
@@ -51,7 +54,8 @@ class Extractor {
       b.vertex_ids.push_back(vertex_id(corners_.cycle[i]->source()));
       b.polygon.vertices.push_back(out_.vertices[b.vertex_ids.back()]);
     }
-    for (const Halfedge_handle h : corners_.cycle) h->data() = id;
+    for (const Halfedge_handle h : corners_.cycle)
+      h->data() = id;
     out_.blocks.push_back(std::move(b));
   }
 
@@ -60,7 +64,8 @@ class Extractor {
       const Halfedge_handle h = e;
       const int left = h->data();
       const int right = h->twin()->data();
-      if (left < 0 && right < 0) continue;
+      if (left < 0 && right < 0)
+        continue;
       const cut::CurveTag& tag = h->curve().data();
       EdgeKind kind = EdgeKind::rock_bridge;
       if (left < 0 || right < 0)
@@ -100,12 +105,12 @@ BlockCut cut_blocks(const Domain& domain, std::span<const JointTrace> traces,
   BlockCut out;
   Arrangement arr;
   cut::build(arr, domain, traces);
-  for (const JointTrace& t : traces) out.stats.n_traces += t.segment.a != t.segment.b ? 1 : 0;
+  for (const JointTrace& t : traces)
+    out.stats.n_traces += t.segment.a != t.segment.b ? 1 : 0;
   out.stats.n_rock_bridges = cut::extend_dangling_ends(arr);
   out.stats.n_hole_cuts = cut::make_faces_simple(arr);
   out.stats.n_faces = cut::number_regions(arr);
-  out.stats.n_partitioned_faces =
-      cut::partition_faces(arr, options.max_optimal_partition_vertices);
+  out.stats.n_partitioned_faces = cut::partition_faces(arr, options.max_optimal_partition_vertices);
   const double tol = model_tolerance(bbox_of(domain));
   const cut::SliverCounts slivers = cut::merge_slivers(arr, options.min_block_area, tol);
   out.stats.n_slivers_merged = slivers.merged;
@@ -113,8 +118,8 @@ BlockCut cut_blocks(const Domain& domain, std::span<const JointTrace> traces,
   out.stats.n_joint_edges_removed = slivers.joint_edges_removed;
   // A merge of two convex faces is convex by construction; where round-off hides a reflex turn
   // (slivers 1e-15 wide), partition again rather than hand out a non-convex block.
-  out.stats.n_partitioned_faces += cut::partition_faces(
-      arr, options.max_optimal_partition_vertices, tol);
+  out.stats.n_partitioned_faces +=
+      cut::partition_faces(arr, options.max_optimal_partition_vertices, tol);
   Extractor(arr, tol, out).run();
   for (const CutBlock& b : out.blocks)
     out.stats.n_small_blocks += signed_area(b.polygon) < options.min_block_area ? 1 : 0;
@@ -124,7 +129,8 @@ BlockCut cut_blocks(const Domain& domain, std::span<const JointTrace> traces,
 std::vector<Polygon> block_polygons(const BlockCut& cut) {
   std::vector<Polygon> out;
   out.reserve(cut.blocks.size());
-  for (const CutBlock& b : cut.blocks) out.push_back(b.polygon);
+  for (const CutBlock& b : cut.blocks)
+    out.push_back(b.polygon);
   return out;
 }
 

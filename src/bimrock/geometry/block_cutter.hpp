@@ -71,15 +71,15 @@ struct CutOptions {
 
 /// What the cutter did, for the run report.
 struct CutStats {
-  int n_traces = 0;              ///< traces inserted (zero-length ones skipped)
-  int n_faces = 0;               ///< regions inside the domain before partition and merge
-  int n_partitioned_faces = 0;   ///< non-convex regions split into convex pieces
-  int n_rock_bridges = 0;        ///< dangling trace ends extended through rock
-  int n_hole_cuts = 0;           ///< vertical cuts joining holes to the rest
-  int n_slivers_merged = 0;      ///< blocks below min_block_area merged into a neighbour
-  int n_slivers_kept = 0;        ///< blocks below min_block_area with no convex merge (kept)
-  int n_joint_edges_removed = 0; ///< joint pieces that became intact rock in a merge
-  int n_small_blocks = 0;        ///< blocks still below min_block_area in the result
+  int n_traces = 0;               ///< traces inserted (zero-length ones skipped)
+  int n_faces = 0;                ///< regions inside the domain before partition and merge
+  int n_partitioned_faces = 0;    ///< non-convex regions split into convex pieces
+  int n_rock_bridges = 0;         ///< dangling trace ends extended through rock
+  int n_hole_cuts = 0;            ///< vertical cuts joining holes to the rest
+  int n_slivers_merged = 0;       ///< blocks below min_block_area merged into a neighbour
+  int n_slivers_kept = 0;         ///< blocks below min_block_area with no convex merge (kept)
+  int n_joint_edges_removed = 0;  ///< joint pieces that became intact rock in a merge
+  int n_small_blocks = 0;         ///< blocks still below min_block_area in the result
 };
 
 struct BlockCut {

@@ -21,22 +21,23 @@ std::vector<std::pair<std::size_t, std::size_t>> diagonals(std::vector<Point>& c
                                                            int max_optimal_vertices) {
   const std::size_t m = corners.size();
   std::vector<std::size_t> index(m);
-  for (std::size_t k = 0; k < m; ++k) index[k] = k;
+  for (std::size_t k = 0; k < m; ++k)
+    index[k] = k;
   const PartitionTraits traits(CGAL::make_property_map(corners));
   std::vector<PartitionTraits::Polygon_2> pieces;
   if (m <= static_cast<std::size_t>(max_optimal_vertices))
     CGAL::optimal_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces),
                                      traits);
   else
-    CGAL::approx_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces),
-                                    traits);
+    CGAL::approx_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces), traits);
   std::vector<std::pair<std::size_t, std::size_t>> out;
   for (const auto& piece : pieces) {
     const std::vector<std::size_t> ring(piece.vertices_begin(), piece.vertices_end());
     for (std::size_t k = 0; k < ring.size(); ++k) {
       const std::size_t u = ring[k];
       const std::size_t w = ring[(k + 1) % ring.size()];
-      if (w != (u + 1) % m && u != (w + 1) % m) out.push_back(std::minmax(u, w));
+      if (w != (u + 1) % m && u != (w + 1) % m)
+        out.push_back(std::minmax(u, w));
     }
   }
   std::sort(out.begin(), out.end());
@@ -49,7 +50,8 @@ std::vector<std::pair<std::size_t, std::size_t>> diagonals(std::vector<Point>& c
 int number_regions(Arrangement& arr) {
   int region = 0;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
-    if (f->data().inside) f->data().region = region++;
+    if (f->data().inside)
+      f->data().region = region++;
   return region;
 }
 
@@ -57,9 +59,11 @@ int partition_faces(Arrangement& arr, int max_optimal_vertices, double tol) {
   std::vector<Face_handle> faces;
   FaceCorners fc;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (!f->data().inside) continue;
+    if (!f->data().inside)
+      continue;
     find_corners(f, fc);
-    if (!fc.convex && (tol == 0.0 || fc.reflex_deviation > tol)) faces.push_back(f);
+    if (!fc.convex && (tol == 0.0 || fc.reflex_deviation > tol))
+      faces.push_back(f);
   }
   for (const Face_handle f : faces) {  // pieces are new faces: the list stays valid
     find_corners(f, fc);
@@ -71,8 +75,8 @@ int partition_faces(Arrangement& arr, int max_optimal_vertices, double tol) {
       vertices.push_back(fc.cycle[i]->source());
     }
     for (const auto& [u, w] : diagonals(corners, max_optimal_vertices)) {
-      const Traits::X_monotone_curve_2 cut(
-          Traits::Base_x_monotone_curve_2(corners[u], corners[w]), CurveTag{.partition = true});
+      const Traits::X_monotone_curve_2 cut(Traits::Base_x_monotone_curve_2(corners[u], corners[w]),
+                                           CurveTag{.partition = true});
       const Halfedge_handle e = arr.insert_at_vertices(cut, vertices[u], vertices[w]);
       e->face()->data() = label;
       e->twin()->face()->data() = label;

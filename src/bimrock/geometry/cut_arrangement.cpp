@@ -39,12 +39,14 @@ void add_polygon(std::vector<Traits::Curve_2>& curves, const Polygon& p, CurveTa
 void build(Arrangement& arr, const Domain& domain, std::span<const JointTrace> traces) {
   std::vector<Traits::Curve_2> curves;
   add_polygon(curves, domain.outline, {.boundary = true});
-  for (const Polygon& h : domain.holes) add_polygon(curves, h, {.boundary = true});
+  for (const Polygon& h : domain.holes)
+    add_polygon(curves, h, {.boundary = true});
   for (std::size_t z = 0; z < domain.zones.size(); ++z)
     add_polygon(curves, domain.zones[z].outline, {.zones = std::uint64_t{1} << z});
   for (std::size_t t = 0; t < traces.size(); ++t) {
     const Segment& s = traces[t].segment;
-    if (s.a == s.b) continue;
+    if (s.a == s.b)
+      continue;
     curves.emplace_back(Kernel::Segment_2(Point(s.a.x(), s.a.y()), Point(s.b.x(), s.b.y())),
                         CurveTag{.trace = static_cast<std::int32_t>(t),
                                  .line = static_cast<std::int32_t>(curves.size())});
@@ -54,7 +56,8 @@ void build(Arrangement& arr, const Domain& domain, std::span<const JointTrace> t
 }
 
 void label_faces(Arrangement& arr) {
-  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) f->data() = FaceLabel{};
+  for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
+    f->data() = FaceLabel{};
   std::deque<Face_handle> queue;
   Face_handle start = arr.unbounded_face();
   start->data().known = true;
@@ -64,7 +67,8 @@ void label_faces(Arrangement& arr) {
     queue.pop_front();
     for_each_boundary_halfedge(f, [&](Halfedge_handle h) {
       const Face_handle g = h->twin()->face();
-      if (g->data().known) return;
+      if (g->data().known)
+        return;
       const CurveTag& tag = h->curve().data();
       g->data().known = true;
       g->data().inside = f->data().inside != tag.boundary;
@@ -74,9 +78,13 @@ void label_faces(Arrangement& arr) {
   }
 }
 
-int first_zone(std::uint64_t zones) { return zones == 0 ? -1 : std::countr_zero(zones); }
+int first_zone(std::uint64_t zones) {
+  return zones == 0 ? -1 : std::countr_zero(zones);
+}
 
-Vec2 to_vec2(const Point& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+Vec2 to_vec2(const Point& p) {
+  return {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+}
 
 std::vector<Halfedge_handle> boundary_halfedges(Face_handle f) {
   std::vector<Halfedge_handle> out;
@@ -92,7 +100,8 @@ double face_area(Face_handle f) {
   double twice = 0.0;
   for_each_boundary_halfedge(f, [&](Halfedge_handle h) {
     const Vec2 a = to_vec2(h->source()->point());
-    if (first) o = a;
+    if (first)
+      o = a;
     first = false;
     twice += cross(a - o, to_vec2(h->target()->point()) - o);
   });
@@ -110,7 +119,9 @@ void find_corners(Face_handle f, FaceCorners& out) {
   out.reflex_deviation = 0.0;
   auto c = f->outer_ccb();
   const auto first = c;
-  do out.cycle.push_back(c); while (++c != first);
+  do {
+    out.cycle.push_back(c);
+  } while (++c != first);
   const std::size_t n = out.cycle.size();
   std::vector<bool>& right = out.turns_right;
   right.clear();
@@ -118,19 +129,23 @@ void find_corners(Face_handle f, FaceCorners& out) {
     const Halfedge_handle in = out.cycle[(i + n - 1) % n];
     const Halfedge_handle h = out.cycle[i];
     const std::int32_t line = h->curve().data().line;
-    if (line >= 0 && in->curve().data().line == line) continue;  // straight through
+    if (line >= 0 && in->curve().data().line == line)
+      continue;  // straight through
     const CGAL::Orientation o =
         CGAL::orientation(in->source()->point(), h->source()->point(), h->target()->point());
-    if (o == CGAL::COLLINEAR) continue;
+    if (o == CGAL::COLLINEAR)
+      continue;
     out.corner_pos.push_back(i);
     right.push_back(o == CGAL::RIGHT_TURN);
-    if (o == CGAL::RIGHT_TURN) out.convex = false;
+    if (o == CGAL::RIGHT_TURN)
+      out.convex = false;
   }
   // How far a reflex corner lies off the chord of its neighbouring corners (not its neighbouring
   // vertices, which may be a rounding error away on the same line).
   const std::size_t m = out.corner_pos.size();
   for (std::size_t k = 0; k < m; ++k) {
-    if (!right[k]) continue;
+    if (!right[k])
+      continue;
     const auto corner = [&](std::size_t j) -> const Point& {
       return out.cycle[out.corner_pos[j % m]]->source()->point();
     };
@@ -144,7 +159,8 @@ double deviation(const Point& p, const Point& q, const Point& r) {
   const Vec2 b = to_vec2(q);
   const Vec2 c = to_vec2(r);
   // A turn back (by more than 90 degrees) is no small dent, however close q lies to the chord.
-  if ((b - a).dot(c - b) <= 0.0) return std::numeric_limits<double>::infinity();
+  if ((b - a).dot(c - b) <= 0.0)
+    return std::numeric_limits<double>::infinity();
   const Vec2 d = c - a;
   return std::abs(cross(d, b - a)) / d.norm();
 }

@@ -26,8 +26,8 @@ using Point = Kernel::Point_2;
 /// fields by XOR (crossing two coincident outlines changes nothing), the trace by the lowest
 /// index, the rock-bridge flag by OR.
 struct CurveTag {
-  std::uint64_t zones = 0;   ///< bit z: on the outline of zone z (odd number of times)
-  std::int32_t trace = -1;   ///< lowest index of a joint trace it lies on, -1 for none
+  std::uint64_t zones = 0;  ///< bit z: on the outline of zone z (odd number of times)
+  std::int32_t trace = -1;  ///< lowest index of a joint trace it lies on, -1 for none
   /// Lowest index of an input segment (outline, hole and zone edges, then traces) it lies on; a
   /// rock bridge extending a trace takes the trace's. Two edges with the same line are
   /// collinear, known without an orientation test (which is degenerate, hence exact and slow,
@@ -47,14 +47,14 @@ struct MergeTags {
 /// later by splitting copy the label of the face they were split from.
 struct FaceLabel {
   bool known = false;
-  bool inside = false;       ///< inside the outline and outside every hole
-  std::uint64_t zones = 0;   ///< the zones containing it
-  int region = -1;           ///< the region (face before the convex partition) it is part of
-  int id = -1;               ///< scratch index used by the sliver merge
+  bool inside = false;      ///< inside the outline and outside every hole
+  std::uint64_t zones = 0;  ///< the zones containing it
+  int region = -1;          ///< the region (face before the convex partition) it is part of
+  int id = -1;              ///< scratch index used by the sliver merge
 };
 
-using Traits = CGAL::Arr_curve_data_traits_2<CGAL::Arr_segment_traits_2<Kernel>, CurveTag,
-                                             MergeTags>;
+using Traits =
+    CGAL::Arr_curve_data_traits_2<CGAL::Arr_segment_traits_2<Kernel>, CurveTag, MergeTags>;
 using Dcel = CGAL::Arr_extended_dcel<Traits, int, int, FaceLabel>;
 using Arrangement = CGAL::Arrangement_2<Traits, Dcel>;
 using Face_handle = Arrangement::Face_handle;
@@ -83,10 +83,14 @@ template <typename Fn>
 void for_each_boundary_halfedge(Face_handle f, Fn&& fn) {
   const auto walk = [&](Arrangement::Ccb_halfedge_circulator first) {
     auto c = first;
-    do fn(Halfedge_handle(c)); while (++c != first);
+    do {
+      fn(Halfedge_handle(c));
+    } while (++c != first);
   };
-  for (auto o = f->outer_ccbs_begin(); o != f->outer_ccbs_end(); ++o) walk(*o);
-  for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i) walk(*i);
+  for (auto o = f->outer_ccbs_begin(); o != f->outer_ccbs_end(); ++o)
+    walk(*o);
+  for (auto i = f->inner_ccbs_begin(); i != f->inner_ccbs_end(); ++i)
+    walk(*i);
 }
 
 /// The same halfedges as a list (where the arrangement changes while they are used).
@@ -94,9 +98,9 @@ std::vector<Halfedge_handle> boundary_halfedges(Face_handle f);
 
 /// The outer boundary cycle of a simple face and its corners, the vertices where it turns.
 struct FaceCorners {
-  std::vector<Halfedge_handle> cycle;    ///< in order, f on the left
-  std::vector<std::size_t> corner_pos;   ///< position in cycle of the halfedge leaving a corner
-  bool convex = true;                    ///< no corner turns right
+  std::vector<Halfedge_handle> cycle;   ///< in order, f on the left
+  std::vector<std::size_t> corner_pos;  ///< position in cycle of the halfedge leaving a corner
+  bool convex = true;                   ///< no corner turns right
   /// The largest distance by which a corner turning right lies off the chord of its neighbouring
   /// corners (0 when convex): a sliver merge may leave corners reflex by less than a tolerance.
   double reflex_deviation = 0.0;

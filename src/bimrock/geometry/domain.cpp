@@ -13,7 +13,9 @@ namespace {
 // Exact predicates on the input doubles: validation never depends on a tolerance.
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-K::Point_2 point(const Vec2& v) { return {v.x(), v.y()}; }
+K::Point_2 point(const Vec2& v) {
+  return {v.x(), v.y()};
+}
 
 K::Segment_2 edge(const Polygon& p, std::size_t k) {
   return {point(p.vertices[k]), point(p.vertices[(k + 1) % p.size()])};
@@ -22,11 +24,14 @@ K::Segment_2 edge(const Polygon& p, std::size_t k) {
 std::vector<K::Point_2> points(const Polygon& p) {
   std::vector<K::Point_2> out;
   out.reserve(p.size());
-  for (const Vec2& v : p.vertices) out.push_back(point(v));
+  for (const Vec2& v : p.vertices)
+    out.push_back(point(v));
   return out;
 }
 
-std::string vertex_name(std::size_t k) { return "vertex " + std::to_string(k + 1); }
+std::string vertex_name(std::size_t k) {
+  return "vertex " + std::to_string(k + 1);
+}
 
 // Two edges of one polygon may only meet where they share a vertex, and adjacent edges must not
 // fold back onto each other. O(n^2) with a box test first: outlines have few vertices.
@@ -40,9 +45,11 @@ void check_simple(const Polygon& p, const std::string& item) {
       throw GeometryError(item, "the outline folds back on itself at " + vertex_name((i + 1) % n));
     const CGAL::Bbox_2 box_a = a.bbox();
     for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1) continue;  // adjacent through vertex 0
+      if (i == 0 && j == n - 1)
+        continue;  // adjacent through vertex 0
       const K::Segment_2 c = edge(p, j);
-      if (!CGAL::do_overlap(box_a, c.bbox())) continue;
+      if (!CGAL::do_overlap(box_a, c.bbox()))
+        continue;
       if (CGAL::do_intersect(a, c))
         throw GeometryError(item, "the outline intersects itself: edges " + std::to_string(i + 1) +
                                       " and " + std::to_string(j + 1) + " cross or touch");
@@ -52,7 +59,8 @@ void check_simple(const Polygon& p, const std::string& item) {
 
 void check_polygon(const Polygon& p, const std::string& item) {
   const std::size_t n = p.size();
-  if (n < 3) throw GeometryError(item, "a polygon needs at least 3 vertices");
+  if (n < 3)
+    throw GeometryError(item, "a polygon needs at least 3 vertices");
   for (std::size_t k = 0; k < n; ++k) {
     if (!std::isfinite(p.vertices[k].x()) || !std::isfinite(p.vertices[k].y()))
       throw GeometryError(item, vertex_name(k) + " is not a finite number");
@@ -78,7 +86,8 @@ bool edges_meet(const Polygon& a, const Polygon& b) {
     const K::Segment_2 s = edge(a, i);
     for (std::size_t j = 0; j < b.size(); ++j) {
       const K::Segment_2 t = edge(b, j);
-      if (CGAL::do_overlap(s.bbox(), t.bbox()) && CGAL::do_intersect(s, t)) return true;
+      if (CGAL::do_overlap(s.bbox(), t.bbox()) && CGAL::do_intersect(s, t))
+        return true;
     }
   }
   return false;
@@ -110,23 +119,27 @@ void validate(const Domain& d) {
     }
   }
   if (d.zones.size() > static_cast<std::size_t>(Domain::kMaxZones))
-    throw GeometryError("domain.zones", "at most " + std::to_string(Domain::kMaxZones) +
-                                            " zones are supported");
+    throw GeometryError("domain.zones",
+                        "at most " + std::to_string(Domain::kMaxZones) + " zones are supported");
   for (std::size_t z = 0; z < d.zones.size(); ++z)
     check_polygon(d.zones[z].outline, "domain.zones[" + std::to_string(z) + "]");
 }
 
 double area(const Domain& d) {
   double a = signed_area(d.outline);
-  for (const Polygon& h : d.holes) a -= signed_area(h);
+  for (const Polygon& h : d.holes)
+    a -= signed_area(h);
   return a;
 }
 
-BBox bbox_of(const Domain& d) { return bbox_of(d.outline); }
+BBox bbox_of(const Domain& d) {
+  return bbox_of(d.outline);
+}
 
 int zone_containing(const Domain& d, const Vec2& p) {
   for (std::size_t z = 0; z < d.zones.size(); ++z) {
-    if (side_of(d.zones[z].outline, p) == CGAL::ON_BOUNDED_SIDE) return static_cast<int>(z);
+    if (side_of(d.zones[z].outline, p) == CGAL::ON_BOUNDED_SIDE)
+      return static_cast<int>(z);
   }
   return -1;
 }

@@ -39,21 +39,26 @@ std::optional<Hit> first_hit(Face_handle f, Vertex_handle s, const Kernel::Ray_2
   std::optional<Hit> best;
   const Point& origin = s->point();
   const auto consider = [&](const Point& p, Halfedge_handle e) {
-    if (best && CGAL::compare_distance_to_point(origin, p, best->point) != CGAL::SMALLER) return;
+    if (best && CGAL::compare_distance_to_point(origin, p, best->point) != CGAL::SMALLER)
+      return;
     best = Hit{p, e, std::nullopt};
-    if (p == e->source()->point()) best->vertex = e->source();
-    if (p == e->target()->point()) best->vertex = e->target();
+    if (p == e->source()->point())
+      best->vertex = e->source();
+    if (p == e->target()->point())
+      best->vertex = e->target();
   };
   for_each_boundary_halfedge(f, [&](Halfedge_handle e) {
-    if (e->source() == s || e->target() == s) return;  // they touch the ray at s only
+    if (e->source() == s || e->target() == s)
+      return;  // they touch the ray at s only
     const Kernel::Segment_2 seg(e->source()->point(), e->target()->point());
-    if (!CGAL::do_intersect(ray, seg)) return;
+    if (!CGAL::do_intersect(ray, seg))
+      return;
     const auto x = CGAL::intersection(ray, seg);
     if (const Point* p = boost::get<Point>(&*x)) {
       consider(*p, e);
     } else if (const auto* overlap = boost::get<Kernel::Segment_2>(&*x)) {
-      const bool first = CGAL::has_smaller_distance_to_point(origin, overlap->source(),
-                                                            overlap->target());
+      const bool first =
+          CGAL::has_smaller_distance_to_point(origin, overlap->source(), overlap->target());
       consider(first ? overlap->source() : overlap->target(), e);
     }
   });
@@ -68,11 +73,14 @@ std::optional<Halfedge_handle> extreme(const std::vector<Halfedge_handle>& cycle
   Vertex_handle best = cycle.front()->target();
   for (const Halfedge_handle h : cycle) {
     const CGAL::Comparison_result c = CGAL::compare_yx(h->target()->point(), best->point());
-    if ((top && c == CGAL::LARGER) || (!top && c == CGAL::SMALLER)) best = h->target();
+    if ((top && c == CGAL::LARGER) || (!top && c == CGAL::SMALLER))
+      best = h->target();
   }
-  if (avoid && best == *avoid) return std::nullopt;
+  if (avoid && best == *avoid)
+    return std::nullopt;
   for (const Halfedge_handle h : cycle) {
-    if (h->target() == best && sector_contains(h, dir)) return h;
+    if (h->target() == best && sector_contains(h, dir))
+      return h;
   }
   return std::nullopt;
 }
@@ -82,7 +90,8 @@ std::optional<Halfedge_handle> extreme(const std::vector<Halfedge_handle>& cycle
 std::vector<std::vector<Halfedge_handle>> sub_cycles(const std::vector<Halfedge_handle>& cycle) {
   std::vector<std::vector<Halfedge_handle>> loops;
   std::vector<Halfedge_handle> stack{cycle.back()};  // its target is where the cycle starts
-  for (const Halfedge_handle h : cycle) h->target()->data() = -1;
+  for (const Halfedge_handle h : cycle)
+    h->target()->data() = -1;
   cycle.back()->target()->data() = 0;
   for (const Halfedge_handle h : cycle) {
     const int at = h->target()->data();
@@ -98,8 +107,10 @@ std::vector<std::vector<Halfedge_handle>> sub_cycles(const std::vector<Halfedge_
     stack.resize(static_cast<std::size_t>(at) + 1);
     loops.push_back(std::move(loop));
   }
-  for (const Halfedge_handle h : cycle) h->target()->data() = -1;
-  if (loops.size() == 1) loops.clear();  // the whole cycle closed once: simple
+  for (const Halfedge_handle h : cycle)
+    h->target()->data() = -1;
+  if (loops.size() == 1)
+    loops.clear();  // the whole cycle closed once: simple
   return loops;
 }
 
@@ -120,12 +131,16 @@ bool cut_once(Arrangement& arr, Face_handle f, std::vector<Face_handle>& new_fac
   if (f->number_of_inner_ccbs() > 0) {
     auto c = *f->inner_ccbs_begin();
     const auto first = c;
-    do cycle.push_back(c); while (++c != first);
+    do {
+      cycle.push_back(c);
+    } while (++c != first);
   } else {
     auto c = f->outer_ccb();
     const auto first = c;
     std::vector<Halfedge_handle> outer;
-    do outer.push_back(c); while (++c != first);
+    do {
+      outer.push_back(c);
+    } while (++c != first);
     // A clockwise sub-cycle is a hole attached to the rest at one vertex (its last target).
     for (auto& loop : sub_cycles(outer)) {
       if (loop.size() >= 3 && cycle_area(loop) < 0.0) {
@@ -134,7 +149,8 @@ bool cut_once(Arrangement& arr, Face_handle f, std::vector<Face_handle>& new_fac
         break;
       }
     }
-    if (cycle.empty()) return false;
+    if (cycle.empty())
+      return false;
   }
   std::optional<Halfedge_handle> h = extreme(cycle, true, attachment, up);
   Vector dir = up;
@@ -142,10 +158,11 @@ bool cut_once(Arrangement& arr, Face_handle f, std::vector<Face_handle>& new_fac
     h = extreme(cycle, false, attachment, down);
     dir = down;
   }
-  if (!h) throw std::logic_error("block cutter: no vertical cut leaves a hole of a face");
+  if (!h)
+    throw std::logic_error("block cutter: no vertical cut leaves a hole of a face");
   const Halfedge_handle e = cut_along_ray(arr, *h, dir);
-  if (e->face() != e->twin()->face()) new_faces.push_back(e->face() == f ? e->twin()->face()
-                                                                         : e->face());
+  if (e->face() != e->twin()->face())
+    new_faces.push_back(e->face() == f ? e->twin()->face() : e->face());
   return true;
 }
 
@@ -157,7 +174,8 @@ Halfedge_handle cut_along_ray(Arrangement& arr, Halfedge_handle h, const Vector&
   const Face_handle f = h->face();
   const FaceLabel label = f->data();
   const std::optional<Hit> hit = first_hit(f, s, Kernel::Ray_2(s->point(), dir));
-  if (!hit) throw std::logic_error("block cutter: a cut from inside a face met no edge");
+  if (!hit)
+    throw std::logic_error("block cutter: a cut from inside a face met no edge");
   Vertex_handle v;
   if (hit->vertex) {
     v = *hit->vertex;
@@ -179,11 +197,13 @@ Halfedge_handle cut_along_ray(Arrangement& arr, Halfedge_handle h, const Vector&
 int extend_dangling_ends(Arrangement& arr) {
   std::vector<Vertex_handle> tips;
   for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
-    if (v->degree() == 1 && v->incident_halfedges()->face()->data().inside) tips.push_back(v);
+    if (v->degree() == 1 && v->incident_halfedges()->face()->data().inside)
+      tips.push_back(v);
   }
   int n = 0;
   for (const Vertex_handle tip : tips) {
-    if (tip->degree() != 1) continue;  // an earlier extension ended on it
+    if (tip->degree() != 1)
+      continue;                                           // an earlier extension ended on it
     const Halfedge_handle h = tip->incident_halfedges();  // ends at the tip
     cut_along_ray(arr, h, tip->point() - h->source()->point(), h->curve().data().line);
     ++n;
@@ -194,29 +214,35 @@ int extend_dangling_ends(Arrangement& arr) {
 // True when f has no hole and its outer cycle visits every vertex once (the common case,
 // decided without allocating). Marks visited vertices with `stamp`.
 bool is_simple(Face_handle f, int stamp) {
-  if (f->number_of_inner_ccbs() > 0) return false;
+  if (f->number_of_inner_ccbs() > 0)
+    return false;
   auto c = f->outer_ccb();
   const auto first = c;
   do {
-    if (c->target()->data() == stamp) return false;
+    if (c->target()->data() == stamp)
+      return false;
     c->target()->data() = stamp;
   } while (++c != first);
   return true;
 }
 
 int make_faces_simple(Arrangement& arr) {
-  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) v->data() = -1;
+  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
+    v->data() = -1;
   std::vector<Face_handle> work;
   int stamp = 0;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f)
-    if (f->data().inside && !is_simple(f, stamp++)) work.push_back(f);
-  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) v->data() = -1;
+    if (f->data().inside && !is_simple(f, stamp++))
+      work.push_back(f);
+  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v)
+    v->data() = -1;
   int n = 0;
   while (!work.empty()) {
     const Face_handle f = work.back();
     work.pop_back();
     std::vector<Face_handle> new_faces;
-    while (cut_once(arr, f, new_faces)) ++n;
+    while (cut_once(arr, f, new_faces))
+      ++n;
     work.insert(work.end(), new_faces.begin(), new_faces.end());
   }
   return n;

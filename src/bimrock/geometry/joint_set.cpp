@@ -29,7 +29,8 @@ double vary(SeededRandom& rng, const Variation& v) {
 double draw_spacing(SeededRandom& rng, const JointSet& set) {
   for (int attempt = 0; attempt < 100; ++attempt) {
     const double s = set.spacing + vary(rng, set.spacing_variation);
-    if (s >= 0.1 * set.spacing) return s;
+    if (s >= 0.1 * set.spacing)
+      return s;
   }
   return 0.1 * set.spacing;
 }
@@ -47,12 +48,14 @@ bool clip_line(const Vec2& f, const Vec2& t, const BBox& box, double& a0, double
   a1 = std::numeric_limits<double>::infinity();
   for (int axis = 0; axis < 2; ++axis) {
     if (t[axis] == 0.0) {
-      if (f[axis] < box.lo[axis] || f[axis] > box.hi[axis]) return false;
+      if (f[axis] < box.lo[axis] || f[axis] > box.hi[axis])
+        return false;
       continue;
     }
     double u = (box.lo[axis] - f[axis]) / t[axis];
     double v = (box.hi[axis] - f[axis]) / t[axis];
-    if (u > v) std::swap(u, v);
+    if (u > v)
+      std::swap(u, v);
     a0 = std::max(a0, u);
     a1 = std::min(a1, v);
   }
@@ -69,22 +72,26 @@ std::vector<std::pair<long, double>> joint_offsets(const JointSet& set, double n
   if (set.spacing_variation.distribution == Distribution::none) {
     const auto k0 = static_cast<long>(std::ceil(n_min / set.spacing));
     const auto k1 = static_cast<long>(std::floor(n_max / set.spacing));
-    for (long k = k0; k <= k1; ++k) out.emplace_back(k, static_cast<double>(k) * set.spacing);
+    for (long k = k0; k <= k1; ++k)
+      out.emplace_back(k, static_cast<double>(k) * set.spacing);
     return out;
   }
   // Cumulative spacings walk out from joint 0, one stream on each side.
   SeededRandom up(derive_seed(set.seed, 0));
   double o = 0.0;
   for (long k = 0; o <= n_max; ++k) {
-    if (o >= n_min) out.emplace_back(k, o);
+    if (o >= n_min)
+      out.emplace_back(k, o);
     o += draw_spacing(up, set);
   }
   SeededRandom down(derive_seed(set.seed, 2));
   o = 0.0;
   for (long k = -1;; --k) {
     o -= draw_spacing(down, set);
-    if (o < n_min) break;
-    if (o <= n_max) out.emplace_back(k, o);
+    if (o < n_min)
+      break;
+    if (o <= n_max)
+      out.emplace_back(k, o);
   }
   std::sort(out.begin(), out.end());
   return out;
@@ -94,16 +101,21 @@ std::vector<std::pair<long, double>> joint_offsets(const JointSet& set, double n
 
 Vec2 direction_deg(double deg) {
   const double r = std::fmod(deg, 360.0);
-  if (r == 0.0) return {1.0, 0.0};
-  if (r == 90.0 || r == -270.0) return {0.0, 1.0};
-  if (r == 180.0 || r == -180.0) return {-1.0, 0.0};
-  if (r == 270.0 || r == -90.0) return {0.0, -1.0};
+  if (r == 0.0)
+    return {1.0, 0.0};
+  if (r == 90.0 || r == -270.0)
+    return {0.0, 1.0};
+  if (r == 180.0 || r == -180.0)
+    return {-1.0, 0.0};
+  if (r == 270.0 || r == -90.0)
+    return {0.0, -1.0};
   const double a = deg * M_PI / 180.0;
   return {std::cos(a), std::sin(a)};
 }
 
 void validate(const JointSet& set, const std::string& item) {
-  if (!std::isfinite(set.dip_deg)) throw GeometryError(item + ".dip", "must be a finite angle");
+  if (!std::isfinite(set.dip_deg))
+    throw GeometryError(item + ".dip", "must be a finite angle");
   if (!(set.spacing > 0.0) || !std::isfinite(set.spacing))
     throw GeometryError(item + ".spacing", "must be positive");
   if (!std::isfinite(set.origin.x()) || !std::isfinite(set.origin.y()))
@@ -126,7 +138,8 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
   const std::string item = "joint_sets[" + std::to_string(set_index) + "]";
   validate(set, item);
   std::vector<JointTrace> traces;
-  if (box.empty()) return traces;
+  if (box.empty())
+    return traces;
   const double m = trace_margin(box, set);
   BBox grown;
   grown.add(Vec2(box.lo - Vec2(m, m)));
@@ -136,8 +149,8 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
   const Vec2 n = perp(t0);
   double n_min = std::numeric_limits<double>::infinity();
   double n_max = -n_min;
-  for (const Vec2& c : {grown.lo, grown.hi, Vec2(grown.lo.x(), grown.hi.y()),
-                        Vec2(grown.hi.x(), grown.lo.y())}) {
+  for (const Vec2& c :
+       {grown.lo, grown.hi, Vec2(grown.lo.x(), grown.hi.y()), Vec2(grown.hi.x(), grown.lo.y())}) {
     n_min = std::min(n_min, n.dot(c - set.origin));
     n_max = std::max(n_max, n.dot(c - set.origin));
   }
@@ -154,10 +167,11 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
     const Vec2 foot = set.origin + offset * n;
     double a0 = 0.0;
     double a1 = 0.0;
-    if (!clip_line(foot, t, grown, a0, a1)) continue;
+    if (!clip_line(foot, t, grown, a0, a1))
+      continue;
     const auto add = [&](double b0, double b1) {
-      traces.push_back({{foot + b0 * t, foot + b1 * t}, set_index, static_cast<int>(k),
-                        set.material});
+      traces.push_back(
+          {{foot + b0 * t, foot + b1 * t}, set_index, static_cast<int>(k), set.material});
     };
     if (persistent) {
       add(a0, a1);
@@ -170,7 +184,8 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
       const double start = phase + static_cast<double>(j) * period;
       const double b0 = std::max(a0, start);
       const double b1 = std::min(a1, start + length);
-      if (b1 > b0) add(b0, b1);
+      if (b1 > b0)
+        add(b0, b1);
     }
   }
   return traces;
@@ -190,9 +205,11 @@ std::vector<JointTrace> generate_traces(std::span<const JointSet> sets,
 }
 
 double suggested_min_block_area(std::span<const JointSet> sets) {
-  if (sets.empty()) return 0.0;
+  if (sets.empty())
+    return 0.0;
   double s = std::numeric_limits<double>::infinity();
-  for (const JointSet& set : sets) s = std::min(s, set.spacing);
+  for (const JointSet& set : sets)
+    s = std::min(s, set.spacing);
   return 0.01 * s * s;
 }
 

@@ -58,8 +58,8 @@ struct Joint {
 /// One straight joint trace and where it came from.
 struct JointTrace {
   Segment segment{};
-  int set = -1;    ///< index of its joint set, -1 for an individual joint
-  int joint = 0;   ///< index of its joint within the set (any sign), or of the individual joint
+  int set = -1;   ///< index of its joint set, -1 for an individual joint
+  int joint = 0;  ///< index of its joint within the set (any sign), or of the individual joint
   std::string material{};
 };
 

@@ -26,7 +26,8 @@ const Point& run_start(Halfedge_handle h) {
     const bool straight = (line >= 0 && p->curve().data().line == line) ||
                           CGAL::orientation(p->source()->point(), e->source()->point(),
                                             e->target()->point()) == CGAL::COLLINEAR;
-    if (!straight) break;
+    if (!straight)
+      break;
     e = p;
   }
   return e->source()->point();
@@ -41,7 +42,8 @@ const Point& run_end(Halfedge_handle h) {
     const bool straight = (line >= 0 && n->curve().data().line == line) ||
                           CGAL::orientation(e->source()->point(), e->target()->point(),
                                             n->target()->point()) == CGAL::COLLINEAR;
-    if (!straight) break;
+    if (!straight)
+      break;
     e = n;
   }
   return e->target()->point();
@@ -55,17 +57,19 @@ const Point& run_end(Halfedge_handle h) {
 bool union_convex(Halfedge_handle h, Face_handle g, double tol) {
   const auto turn_ok = [tol](Halfedge_handle into, Halfedge_handle out) {
     const std::int32_t line = into->curve().data().line;
-    if (line >= 0 && out->curve().data().line == line) return true;  // straight on
+    if (line >= 0 && out->curve().data().line == line)
+      return true;  // straight on
     const Point& q = into->target()->point();
-    if (CGAL::orientation(into->source()->point(), q, out->target()->point()) !=
-        CGAL::RIGHT_TURN)
+    if (CGAL::orientation(into->source()->point(), q, out->target()->point()) != CGAL::RIGHT_TURN)
       return true;
     return deviation(run_start(into), q, run_end(out)) <= tol;
   };
   // The shared part starts at h->source(): f's boundary comes in, g's goes out.
-  if (h->prev()->twin()->face() != g && !turn_ok(h->prev(), h->twin()->next())) return false;
+  if (h->prev()->twin()->face() != g && !turn_ok(h->prev(), h->twin()->next()))
+    return false;
   // It ends at h->target(): g's boundary comes in, f's goes out.
-  if (h->next()->twin()->face() != g && !turn_ok(h->twin()->prev(), h->next())) return false;
+  if (h->next()->twin()->face() != g && !turn_ok(h->twin()->prev(), h->next()))
+    return false;
   return true;
 }
 
@@ -76,7 +80,8 @@ std::optional<Neighbour> best_neighbour(Face_handle f, double tol) {
   std::vector<Neighbour> candidates;
   for_each_boundary_halfedge(f, [&](Halfedge_handle h) {
     const Face_handle g = h->twin()->face();
-    if (g == f || !g->data().inside) return;
+    if (g == f || !g->data().inside)
+      return;
     const double length = (to_vec2(h->target()->point()) - to_vec2(h->source()->point())).norm();
     auto it = std::find_if(candidates.begin(), candidates.end(),
                            [&](const Neighbour& n) { return n.face == g; });
@@ -90,7 +95,8 @@ std::optional<Neighbour> best_neighbour(Face_handle f, double tol) {
     return std::make_tuple(n.same_zones, n.shared_length, -n.face->data().id);
   };
   for (const Neighbour& n : candidates) {
-    if (n.convex_union && (!best || rank(n) > rank(*best))) best = n;
+    if (n.convex_union && (!best || rank(n) > rank(*best)))
+      best = n;
   }
   return best;
 }
@@ -99,24 +105,28 @@ std::optional<Neighbour> best_neighbour(Face_handle f, double tol) {
 
 SliverCounts merge_slivers(Arrangement& arr, double min_area, double tol) {
   SliverCounts counts;
-  if (!(min_area > 0.0)) return counts;
+  if (!(min_area > 0.0))
+    return counts;
   std::vector<Face_handle> faces;  // by id; a merged-away face's entry is never read again
   std::vector<double> areas;
   std::vector<bool> alive;
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> slivers;
   for (auto f = arr.faces_begin(); f != arr.faces_end(); ++f) {
-    if (!f->data().inside) continue;
+    if (!f->data().inside)
+      continue;
     f->data().id = static_cast<int>(faces.size());
     faces.push_back(f);
     areas.push_back(face_area(f));
     alive.push_back(true);
-    if (areas.back() < min_area) slivers.emplace(areas.back(), f->data().id);
+    if (areas.back() < min_area)
+      slivers.emplace(areas.back(), f->data().id);
   }
   while (!slivers.empty()) {
     const auto [a, id] = slivers.top();
     slivers.pop();
-    if (!alive[id] || a != areas[id]) continue;  // merged away, or queued again since
+    if (!alive[id] || a != areas[id])
+      continue;  // merged away, or queued again since
     const Face_handle f = faces[id];
     const std::optional<Neighbour> n = best_neighbour(f, tol);
     if (!n) {
@@ -126,10 +136,12 @@ SliverCounts merge_slivers(Arrangement& arr, double min_area, double tol) {
     const FaceLabel keep = n->face->data();
     std::vector<Halfedge_handle> shared;
     for (const Halfedge_handle h : boundary_halfedges(f))
-      if (h->twin()->face() == n->face) shared.push_back(h);
+      if (h->twin()->face() == n->face)
+        shared.push_back(h);
     Face_handle merged;
     for (const Halfedge_handle h : shared) {
-      if (h->curve().data().trace >= 0) ++counts.joint_edges_removed;
+      if (h->curve().data().trace >= 0)
+        ++counts.joint_edges_removed;
       merged = arr.remove_edge(h);
     }
     merged->data() = keep;
@@ -137,7 +149,8 @@ SliverCounts merge_slivers(Arrangement& arr, double min_area, double tol) {
     alive[id] = false;
     areas[keep.id] += areas[id];
     ++counts.merged;
-    if (areas[keep.id] < min_area) slivers.emplace(areas[keep.id], keep.id);
+    if (areas[keep.id] < min_area)
+      slivers.emplace(areas[keep.id], keep.id);
   }
   return counts;
 }

@@ -46,7 +46,8 @@ std::vector<Vec2> seed_points(const Polygon& block, const VoronoiOptions& o, See
         const double dx = rng.uniform(-move, move);  // drawn for every cell: reproducible
         const double dy = rng.uniform(-move, move);
         const Vec2 p = start + Vec2((i + 0.5) * h + dx, (j + 0.5) * h + dy);
-        if (contains(block, p, inset)) seeds.push_back(p);
+        if (contains(block, p, inset))
+          seeds.push_back(p);
       }
     }
     return seeds;
@@ -54,7 +55,8 @@ std::vector<Vec2> seed_points(const Polygon& block, const VoronoiOptions& o, See
   const auto n = static_cast<std::size_t>(std::max(1.0, std::round(signed_area(block) / (h * h))));
   for (std::size_t attempt = 0; seeds.size() < n && attempt < 100 * n; ++attempt) {
     const Vec2 p(rng.uniform(box.lo.x(), box.hi.x()), rng.uniform(box.lo.y(), box.hi.y()));
-    if (contains(block, p, inset)) seeds.push_back(p);
+    if (contains(block, p, inset))
+      seeds.push_back(p);
   }
   return seeds;
 }
@@ -62,19 +64,24 @@ std::vector<Vec2> seed_points(const Polygon& block, const VoronoiOptions& o, See
 // Voronoi edges of the seeds, rays and lines cut off far outside the block.
 std::vector<JointTrace> voronoi_edges(const std::vector<Vec2>& seeds, const BBox& box) {
   Delaunay dt;
-  for (const Vec2& s : seeds) dt.insert(K::Point_2(s.x(), s.y()));
+  for (const Vec2& s : seeds)
+    dt.insert(K::Point_2(s.x(), s.y()));
   const double far = box.diagonal();
   const K::Iso_rectangle_2 clip(box.lo.x() - far, box.lo.y() - far, box.hi.x() + far,
                                 box.hi.y() + far);
   std::vector<JointTrace> edges;
   const auto add = [&](const K::Segment_2& s) {
     edges.push_back({{{s.source().x(), s.source().y()}, {s.target().x(), s.target().y()}},
-                     -1, static_cast<int>(edges.size()), ""});
+                     -1,
+                     static_cast<int>(edges.size()),
+                     ""});
   };
   const auto add_clipped = [&](const auto& infinite) {
     const auto x = CGAL::intersection(clip, infinite);
-    if (!x) return;
-    if (const auto* s = boost::get<K::Segment_2>(&*x)) add(*s);
+    if (!x)
+      return;
+    if (const auto* s = boost::get<K::Segment_2>(&*x))
+      add(*s);
   };
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
     const CGAL::Object o = dt.dual(*e);
@@ -96,7 +103,8 @@ std::vector<JointTrace> voronoi_edges(const std::vector<Vec2>& seeds, const BBox
       std::swap(t.segment.a, t.segment.b);
   std::sort(edges.begin(), edges.end(),
             [&](const JointTrace& p, const JointTrace& q) { return key(p) < key(q); });
-  for (std::size_t k = 0; k < edges.size(); ++k) edges[k].joint = static_cast<int>(k);
+  for (std::size_t k = 0; k < edges.size(); ++k)
+    edges[k].joint = static_cast<int>(k);
   return edges;
 }
 
@@ -111,15 +119,17 @@ std::vector<VoronoiCell> voronoi_subdivision(const Polygon& block, int parent,
     throw GeometryError("blocks[" + std::to_string(parent) + "]", describe(c));
   SeededRandom rng(derive_seed(options.seed, static_cast<std::uint64_t>(parent)));
   const std::vector<Vec2> seeds = seed_points(block, options, rng);
-  if (seeds.size() < 2) return {{block, parent}};
+  if (seeds.size() < 2)
+    return {{block, parent}};
   const std::vector<JointTrace> edges = voronoi_edges(seeds, box);
   CutOptions cut_options;
-  cut_options.min_block_area = options.min_cell_fraction * options.target_size *
-                               options.target_size;
+  cut_options.min_block_area =
+      options.min_cell_fraction * options.target_size * options.target_size;
   const BlockCut cut = cut_blocks(Domain{block, {}, {}}, edges, cut_options);
   std::vector<VoronoiCell> cells;
   cells.reserve(cut.blocks.size());
-  for (const CutBlock& b : cut.blocks) cells.push_back({b.polygon, parent});
+  for (const CutBlock& b : cut.blocks)
+    cells.push_back({b.polygon, parent});
   return cells;
 }
 

@@ -18,8 +18,8 @@ enum class SeedPattern {
 struct VoronoiOptions {
   double target_size = 1.0;  ///< cells have about target_size^2 area
   SeedPattern pattern = SeedPattern::jittered_grid;
-  double jitter = 0.5;       ///< jittered grid: seeds move by up to jitter * target_size / 2
-  std::uint64_t seed = 0;    ///< same seed, same cells; each block draws its own stream
+  double jitter = 0.5;     ///< jittered grid: seeds move by up to jitter * target_size / 2
+  std::uint64_t seed = 0;  ///< same seed, same cells; each block draws its own stream
   /// Cells smaller than this fraction of target_size^2 (clipped corners) are merged into a
   /// neighbour by the block cutter.
   double min_cell_fraction = 0.01;
