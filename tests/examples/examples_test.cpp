@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -203,6 +204,32 @@ TEST(RockSlopeExample, TheCutConservesAreaAndTheCaseSolves) {
       crest_uy = m.at("uy_m").get<double>();
   EXPECT_LT(crest_uy, -0.5e-3);
   EXPECT_GT(crest_uy, -5e-3);
+  std::filesystem::remove_all(out.parent_path());
+}
+
+// Example 4: a layered ground imported from a gmsh mesh, confined laterally (rollers), under a
+// uniform surcharge p. Expected (one-dimensional compression, exact for this problem): each
+// layer strains by p / M with the constrained modulus M = E (1 - nu) / ((1 + nu) (1 - 2 nu))
+// of plane strain, so the surface settles by p (h_soil / M_soil + h_rock / M_rock) and the rock
+// head by p h_rock / M_rock. The continuum (penalty) interfaces between the cells add a
+// compliance of order 1/p = 1e-7 (DESIGN.md section 2): tolerance 1e-6 relative.
+TEST(GmshLayeredGroundExample, SettlementMatchesOneDimensionalCompression) {
+  const std::filesystem::path out = run_example("gmsh_layered_ground/case.yaml");
+  const nlohmann::json s = testing::read_json(out / "summary.json");
+  const auto constrained = [](double e, double nu) {
+    return e * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  };
+  const double p = 100e3, m_soil = constrained(50e6, 0.3), m_rock = constrained(20e9, 0.25);
+  const double surface = -p * (4.0 / m_soil + 6.0 / m_rock), rock_head = -p * 6.0 / m_rock;
+  std::map<std::string, double> uy;
+  for (const auto& m : s.at("monitors"))
+    uy[m.at("name").get<std::string>()] = m.at("uy_m").get<double>();
+  EXPECT_NEAR(uy.at("surface"), surface, 1e-6 * std::abs(surface));
+  EXPECT_NEAR(uy.at("rock_head"), rock_head, 1e-6 * std::abs(rock_head));
+  EXPECT_NEAR(strain(s, "eps_y"), surface / 10.0, 1e-6 * std::abs(surface / 10.0));
+  EXPECT_NEAR(strain(s, "eps_x"), 0.0, 1e-6 * std::abs(surface / 10.0));
+  // 10 m x 10 m, the area of the outline of ground.geo.
+  EXPECT_NEAR(s.at("model").at("area_m2").get<double>(), 100.0, 1e-12 * 100.0);
   std::filesystem::remove_all(out.parent_path());
 }
 

@@ -450,17 +450,17 @@ TEST(CaseReaderErrors, SelectorWithTwoKindsIsRejected) {
                        "line: [[0, 0], [1, 0]]}\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_EQ(f.item, "joints.rules[0]");
-  EXPECT_THAT(f.message, HasSubstr("only one of line, box or orientation"));
+  EXPECT_THAT(f.message, HasSubstr("only one of line, box, orientation or group"));
   f = error_of(kMinimal + "supports:\n  - {line: [[0, 0], [1, 0]], box: [[0, 0], [1, 1]]}\n");
   EXPECT_EQ(f.item, "supports[0]");
-  EXPECT_THAT(f.message, HasSubstr("only one of line or box"));
+  EXPECT_THAT(f.message, HasSubstr("only one of line, box or group"));
 }
 
 TEST(CaseReaderErrors, SelectorWithNoKindIsRejected) {
   const Failure f = error_of(kMinimal + "supports:\n  - {type: roller}\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_EQ(f.item, "supports[0]");
-  EXPECT_THAT(f.message, HasSubstr("give one of line or box"));
+  EXPECT_THAT(f.message, HasSubstr("give one of line, box or group"));
 }
 
 TEST(CaseReaderErrors, BoxWithCornersSwappedIsRejected) {

@@ -9,10 +9,13 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <utility>
 
+#include <bimrock/io/gmsh_mesh.hpp>
 #include <bimrock/io/yaml_value.hpp>
 
 namespace bimrock {
@@ -34,6 +37,7 @@ constexpr std::array kKeys = {
     CaseKey{"", "joint_materials"},
     CaseKey{"", "blocks"},
     CaseKey{"", "domain"},
+    CaseKey{"", "mesh"},
     CaseKey{"", "joints"},
     CaseKey{"", "supports"},
     CaseKey{"", "loads"},
@@ -102,15 +106,20 @@ constexpr std::array kKeys = {
     CaseKey{"domain.subdivision", "pattern"},
     CaseKey{"domain.subdivision", "jitter"},
     CaseKey{"domain.subdivision", "seed"},
+    CaseKey{"mesh", "file", true},
+    CaseKey{"mesh", "materials", true},
+    CaseKey{"mesh", "interfaces"},
     CaseKey{"joints", "default"},
     CaseKey{"joints", "rules"},
     CaseKey{"joints.rules[]", "material", true},
     CaseKey{"joints.rules[]", "line"},
     CaseKey{"joints.rules[]", "box"},
     CaseKey{"joints.rules[]", "orientation"},
+    CaseKey{"joints.rules[]", "group"},
     CaseKey{"joints.rules[]", "tolerance"},
     CaseKey{"supports[]", "line"},
     CaseKey{"supports[]", "box"},
+    CaseKey{"supports[]", "group"},
     CaseKey{"supports[]", "type"},
     CaseKey{"supports[]", "joint"},
     CaseKey{"loads", "gravity"},
@@ -120,6 +129,7 @@ constexpr std::array kKeys = {
     CaseKey{"loads.points[]", "force", true},
     CaseKey{"loads.tractions[]", "line"},
     CaseKey{"loads.tractions[]", "box"},
+    CaseKey{"loads.tractions[]", "group"},
     CaseKey{"loads.tractions[]", "normal", true},
     CaseKey{"loads.tractions[]", "shear"},
     CaseKey{"monitors[]", "name", true},
@@ -211,14 +221,17 @@ auto read_list(const Value& v, Read read) {
 
 // ---- Selectors ----------------------------------------------------------------------------------
 
-/// Where a rule, support or traction applies: exactly one of line / box / orientation (the
-/// section's key table says which of them it accepts).
-/// @param kinds the accepted keys as a phrase for the message, e.g. "line or box".
+/// Where a rule, support or traction applies: exactly one of line / box / orientation / group
+/// (the section's key table says which of them it accepts). A group selector gets its segments
+/// once the mesh is read (resolve_groups).
+/// @param kinds the accepted keys as a phrase for the message, e.g. "line, box or group".
 Selector read_selector(const Map& m, const char* kinds) {
   const std::optional<Value> line = m.find("line");
   const std::optional<Value> box = m.find("box");
   const std::optional<Value> orientation = m.find("orientation");
-  const int given = int(line.has_value()) + int(box.has_value()) + int(orientation.has_value());
+  const std::optional<Value> group = m.find("group");
+  const int given = int(line.has_value()) + int(box.has_value()) + int(orientation.has_value()) +
+                    int(group.has_value());
   if (given == 0)
     m.self().fail(std::string("say where it applies: give one of ") + kinds);
   if (given > 1)
@@ -237,6 +250,12 @@ Selector read_selector(const Map& m, const char* kinds) {
     s.kind = Selector::Kind::box;
     s.box = BBox{lo, hi};
     s.source = box->ref();
+  } else if (group) {
+    s.kind = Selector::Kind::group;
+    s.group = group->text();
+    if (s.group.empty())
+      group->fail("must name a physical curve of the mesh");
+    s.source = group->ref();
   } else {
     s.kind = Selector::Kind::orientation;
     s.angle_deg = orientation->number();
@@ -589,11 +608,150 @@ DomainSpec read_domain(const Value& v) {
   return d;
 }
 
+// ---- Mesh (imported blocks) ---------------------------------------------------------------------
+
+std::string quoted_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names)
+    out += (out.empty() ? "'" : ", '") + n + "'";
+  return out.empty() ? "none" : out;
+}
+
+std::string cell_item(const MeshCell& c) {
+  return "element " + std::to_string(c.tag) + " (surface " + std::to_string(c.surface) + ")";
+}
+
+/// The material of each cell: the one its physical surface is mapped to in mesh.materials.
+/// Every physical surface with cells must be mapped, every key must be a physical surface.
+void map_materials(const Value& materials, const GmshMesh& mesh, MeshSpec& spec) {
+  for (const MeshCell& c : mesh.cells) {
+    if (c.groups.empty()) {
+      const std::string surface = std::to_string(c.surface);
+      throw InputError(mesh.file, c.line, cell_item(c),
+                       "belongs to no physical surface, so it has no material: in gmsh, put "
+                       "surface " +
+                           surface + " in a physical group (`Physical Surface(\"rock\") = {" +
+                           surface + "};`) and map the group in mesh.materials");
+    }
+  }
+  const std::vector<std::string> surfaces = mesh.group_names(2);
+  std::map<std::string, std::string> material_of;
+  for (const Entry& e : materials.entries()) {
+    if (!std::binary_search(surfaces.begin(), surfaces.end(), e.key)) {
+      e.value.fail("'" + e.key + "' is not a physical surface of " + mesh.file +
+                   " (its physical surfaces: " + quoted_list(surfaces) + ")");
+    }
+    material_of[e.key] = name(e.value);
+    spec.materials.push_back({e.key, material_of[e.key], e.value.ref()});
+  }
+  std::set<std::string> unmapped;
+  for (const MeshCell& c : mesh.cells) {
+    for (const std::string& g : c.groups) {
+      if (!material_of.count(g))
+        unmapped.insert(g);
+    }
+  }
+  if (!unmapped.empty()) {
+    materials.fail("no material for physical surface" +
+                   std::string(unmapped.size() > 1 ? "s " : " ") +
+                   quoted_list({unmapped.begin(), unmapped.end()}) + " of " + mesh.file +
+                   ": map each to a block material, e.g. {" + *unmapped.begin() + ": <material>}");
+  }
+  for (const MeshCell& c : mesh.cells) {
+    std::string material;
+    for (const std::string& g : c.groups) {
+      const std::string& m = material_of.at(g);
+      if (!material.empty() && m != material) {
+        throw InputError(mesh.file, c.line, cell_item(c),
+                         "lies in physical surfaces " + quoted_list(c.groups) +
+                             " mapped to different materials: give each cell one material");
+      }
+      material = m;
+    }
+    spec.cells.push_back(
+        {c.polygon,
+         material,
+         {0, "mesh " + cell_item(c) + " (" + mesh.file + ":" + std::to_string(c.line) + ")"}});
+  }
+}
+
+/// mesh: {file, materials, interfaces}: the cells of a gmsh mesh as blocks (io/gmsh_mesh.hpp).
+/// The mesh file is relative to the case file's folder.
+MeshSpec read_mesh(const Value& v, GmshMesh& mesh) {
+  const Map m = open(v, "mesh");
+  MeshSpec spec;
+  spec.source = v.ref();
+  const Value file = m.at("file");
+  std::filesystem::path path(name(file));
+  if (path.is_relative())
+    path = std::filesystem::path(std::string(v.file())).parent_path() / path;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    file.fail("cannot open the mesh file " + path.string() + ": " +
+              (std::filesystem::exists(path, ec) ? "not a file" : "no such file") +
+              " (a relative path is taken from the case file's folder)");
+  }
+  mesh = read_gmsh_mesh(path.string());
+  spec.file = mesh.file;
+  if (mesh.cells.empty())
+    file.fail(mesh.file + " has no triangles or quadrangles (was it meshed in 2D, `gmsh -2`?)");
+  const Value materials = m.at("materials");
+  if (materials.entries().empty())
+    materials.fail("map at least one physical surface to a block material");
+  map_materials(materials, mesh, spec);
+  if (const auto i = m.find("interfaces")) {
+    spec.interfaces = name(*i);
+    if (spec.interfaces == "continuum")
+      spec.interfaces.clear();
+  }
+  return spec;
+}
+
+/// Fills the segments of every group selector from the line elements of the mesh's physical
+/// curve of that name. A group that is not a physical curve is named with the ones there are.
+void resolve_groups(CaseSpec& s, const GmshMesh* mesh) {
+  const auto resolve = [&](Selector& sel) {
+    if (sel.kind != Selector::Kind::group)
+      return;
+    if (!mesh) {
+      throw InputError(s.file, sel.source,
+                       "a group selects the line elements of a mesh's physical curve: give a "
+                       "mesh section, or select by line or box");
+    }
+    for (const MeshLine& l : mesh->lines) {
+      if (std::find(l.groups.begin(), l.groups.end(), sel.group) != l.groups.end())
+        sel.segments.push_back(l.segment);
+    }
+    if (!sel.segments.empty())
+      return;
+    const std::vector<std::string> curves = mesh->group_names(1);
+    const std::vector<std::string> surfaces = mesh->group_names(2);
+    std::string why = "unknown group '" + sel.group + "': not a physical curve of " + mesh->file;
+    if (std::binary_search(curves.begin(), curves.end(), sel.group))
+      why = "physical curve '" + sel.group + "' of " + mesh->file + " has no line elements";
+    else if (std::binary_search(surfaces.begin(), surfaces.end(), sel.group))
+      why = "'" + sel.group + "' is a physical surface of " + mesh->file +
+            "; select edges by a physical curve";
+    throw InputError(s.file, sel.source,
+                     why + " (its physical curves: " + quoted_list(curves) + ")");
+  };
+  for (JointRule& r : s.joint_rules)
+    resolve(r.where);
+  for (SupportSpec& sup : s.supports)
+    resolve(sup.where);
+  for (TractionSpec& t : s.loads.tractions)
+    resolve(t.where);
+  for (StageSpec& st : s.stages) {
+    for (TractionSpec& t : st.loads.tractions)
+      resolve(t.where);
+  }
+}
+
 JointRule read_joint_rule(const Value& v) {
   const Map m = open(v, "joints.rules[]");
   JointRule r;
   r.material = name(m.at("material"));
-  r.where = read_selector(m, "line, box or orientation");
+  r.where = read_selector(m, "line, box, orientation or group");
   r.source = v.ref();
   return r;
 }
@@ -610,7 +768,7 @@ void read_joints(const Value& v, CaseSpec& spec) {
 SupportSpec read_support(const Value& v) {
   const Map m = open(v, "supports[]");
   SupportSpec s;
-  s.where = read_selector(m, "line or box");
+  s.where = read_selector(m, "line, box or group");
   if (const auto type = m.find("type"))
     s.kind = choice<SupportKind>(*type,
                                  {{"fixed", SupportKind::fixed}, {"roller", SupportKind::roller}});
@@ -630,7 +788,7 @@ PointLoadSpec read_point_load(const Value& v) {
 TractionSpec read_traction(const Value& v) {
   const Map m = open(v, "loads.tractions[]");
   TractionSpec t;
-  t.where = read_selector(m, "line or box");
+  t.where = read_selector(m, "line, box or group");
   t.normal = m.at("normal").number();
   t.shear = m.number_or("shear", 0.0);
   t.source = v.ref();
@@ -742,6 +900,12 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
       v->fail("give either blocks or a domain to cut them from, not both");
     s.domain = read_domain(*v);
   }
+  std::optional<GmshMesh> mesh;
+  if (const auto v = m.find("mesh")) {
+    if (m.has("blocks") || m.has("domain"))
+      v->fail("give one of blocks, a domain or a mesh, not several");
+    s.mesh = read_mesh(*v, mesh.emplace());
+  }
   if (const auto v = m.find("joints"))
     read_joints(*v, s);
   if (const auto v = m.find("supports"))
@@ -759,10 +923,12 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
     if (s.stages.empty())
       v->fail("give at least one stage");
   }
+  resolve_groups(s, mesh ? &*mesh : nullptr);
   require_keys(m, "");
-  if (!m.has("blocks") && !m.has("domain"))
+  if (!m.has("blocks") && !m.has("domain") && !m.has("mesh"))
     throw InputError(file, 0, "blocks",
-                     "required key 'blocks' is missing (or give a domain to cut the blocks from)");
+                     "required key 'blocks' is missing (or give a domain to cut the blocks from, "
+                     "or a mesh)");
   return c;
 }
 

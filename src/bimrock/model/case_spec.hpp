@@ -113,6 +113,24 @@ struct DomainSpec {
   std::map<std::string, int> lines;  ///< the line of each item ("domain.holes[1]"), for errors
 };
 
+/// A physical surface of a mesh and the block material of its cells (`mesh.materials`).
+struct MeshMaterialSpec {
+  std::string group;
+  std::string material;
+  SourceRef source;
+};
+
+/// Blocks imported from a mesh (the case file's `mesh`, issue 4): one block per cell, its
+/// material from its physical surface; the cells are joined by `interfaces`.
+struct MeshSpec {
+  std::string file;                         ///< the mesh file, as read (for messages)
+  std::vector<BlockSpec> cells;             ///< one per cell, in the file's order
+  std::vector<MeshMaterialSpec> materials;  ///< physical surface -> block material
+  /// Joint material between cells; empty: continuum (penalty) interfaces.
+  std::string interfaces;
+  SourceRef source;
+};
+
 struct CaseSpec {
   std::string file;  ///< the case file, for error messages
   std::string title;
@@ -121,6 +139,7 @@ struct CaseSpec {
   std::vector<JointMaterial> joint_materials;
   std::vector<BlockSpec> blocks;
   std::optional<DomainSpec> domain;  ///< blocks generated from a domain (then `blocks` is empty)
+  std::optional<MeshSpec> mesh;      ///< blocks imported from a mesh (then `blocks` is empty)
   std::string default_joint;         ///< joint material of interfaces no rule picks
   std::vector<JointRule> joint_rules;
   std::vector<SupportSpec> supports;

@@ -33,6 +33,8 @@ class Builder {
         fail(spec_.domain->source, "give either blocks or a domain, not both");
       generated_ = generate_blocks(*spec_.domain, spec_.file);
     }
+    if (spec_.mesh)
+      check_mesh();
     add_blocks();
     add_interfaces();
     add_supports();
@@ -87,18 +89,30 @@ class Builder {
     }
   }
 
-  // The joint material of cuts through intact rock in a generated case: the domain's `intact`,
-  // or a continuum (penalty) material added for it.
-  int intact_material() {
-    if (!spec_.domain->intact.empty())
-      return joint_material(spec_.domain->intact, spec_.domain->source);
+  // A mesh stands instead of blocks or a domain; each physical surface names a known material.
+  void check_mesh() const {
+    if (!spec_.blocks.empty() || spec_.domain)
+      fail(spec_.mesh->source, "give one of blocks, a domain or a mesh, not several");
+    for (const MeshMaterialSpec& m : spec_.mesh->materials) {
+      if (!block_material_index_.count(m.material))
+        fail(m.source,
+             "unknown material " + quoted(m.material) + " for physical surface " + quoted(m.group));
+    }
+  }
+
+  // The joint material of cuts through intact rock in a generated case (the domain's `intact`)
+  // and between the cells of a mesh (`mesh.interfaces`): the one named, or if none, a continuum
+  // (penalty) material added for it.
+  int intact_material(const std::string& name, const SourceRef& source) {
+    if (!name.empty())
+      return joint_material(name, source);
     if (intact_ < 0) {
       JointMaterial j;
       j.name = "intact rock (continuum)";
       j.kind = JointMaterial::Kind::continuum;
       j.penalty_factor = model_.settings.penalty_factor;
       j.integration = Integration::gauss;
-      j.source = spec_.domain->source;
+      j.source = source;
       intact_ = static_cast<int>(model_.joint_materials.size());
       model_.joint_materials.push_back(j);
     }
@@ -113,7 +127,9 @@ class Builder {
   }
 
   void add_blocks() {
-    const std::vector<BlockSpec>& blocks = generated_ ? generated_->blocks : spec_.blocks;
+    const std::vector<BlockSpec>& blocks = generated_   ? generated_->blocks
+                                           : spec_.mesh ? spec_.mesh->cells
+                                                        : spec_.blocks;
     if (blocks.empty())
       fail({0, "blocks"}, "the case has no blocks");
     BBox box;
@@ -191,9 +207,13 @@ class Builder {
     if (generated_) {  // the joint sets' materials, intact rock elsewhere; rules still override
       for (std::size_t k = 0; k < shared_.size(); ++k) {
         const std::string name = generated_->joint_between(shared_[k].i, shared_[k].j);
-        material[k] = name.empty() ? intact_material() : joint_material(name, spec_.domain->source);
+        material[k] = name.empty() ? intact_material(spec_.domain->intact, spec_.domain->source)
+                                   : joint_material(name, spec_.domain->source);
       }
     }
+    if (spec_.mesh && !shared_.empty())  // every cell-to-cell interface; rules still override
+      std::fill(material.begin(), material.end(),
+                intact_material(spec_.mesh->interfaces, spec_.mesh->source));
     for (const JointRule& rule : spec_.joint_rules) {
       const int m = joint_material(rule.material, rule.source);
       bool any = false;

@@ -1,5 +1,6 @@
 #include <bimrock/model/selector.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bimrock {
@@ -19,6 +20,10 @@ bool selects(const Selector& sel, const Segment& s, double tol) {
       diff = std::min(diff, 180.0 - diff);
       return diff <= sel.angle_tolerance_deg;
     }
+    case Selector::Kind::group:
+      return std::any_of(sel.segments.begin(), sel.segments.end(), [&](const Segment& e) {
+        return distance_to_segment(e, s.a) <= tol && distance_to_segment(e, s.b) <= tol;
+      });
   }
   return false;
 }
