@@ -5,24 +5,35 @@ DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
   libeigen3-dev libsuitesparse-dev libcgal-dev libyaml-cpp-dev libcli11-dev libfmt-dev \
   nlohmann-json3-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libopenblas0-pthread python3-meshio python3-numpy
+# Optional peers the benchmarks compare with, installed by `make bench` only (bench/CMakeLists.txt
+# builds without them): Siconos Numerics' LCP solvers.
+BENCH_PACKAGES := libsiconos-numerics-dev
 
 JOBS ?= $(shell nproc)
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEMO_OUT ?= results/jointed_rock_mass
 
-.PHONY: all deps build build-asan test demo bench format clean
+.PHONY: all deps bench-deps build build-asan test demo bench format clean
 
 all: build
 
+# Installs the Debian packages of the list $(1) that are missing (idempotent: asks dpkg first).
+define install_missing
+@missing=$$(for p in $(1); do \
+  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed$$' || echo $$p; \
+done); \
+if [ -n "$$missing" ]; then \
+  echo "Installing missing Debian packages:" $$missing; \
+  $(SUDO) apt-get update && \
+  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $$missing; \
+fi
+endef
+
 deps:
-	@missing=$$(for p in $(DEBIAN_PACKAGES); do \
-	  dpkg-query -W -f='$${Status}\n' $$p 2>/dev/null | grep -q '^install ok installed$$' || echo $$p; \
-	done); \
-	if [ -n "$$missing" ]; then \
-	  echo "Installing missing Debian packages:" $$missing; \
-	  $(SUDO) apt-get update && \
-	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y --no-install-recommends $$missing; \
-	fi
+	$(call install_missing,$(DEBIAN_PACKAGES))
+
+bench-deps: deps
+	$(call install_missing,$(BENCH_PACKAGES))
 
 build: deps
 	cmake --preset release
@@ -52,7 +63,7 @@ demo: build
 	@echo "  results/pull_out/: plot_A.png (load-displacement at A), collapse.png (the mechanism),"
 	@echo "    history.csv, summary.json (collapse bracket); examples/pull_out/README.md explains them."
 
-bench: deps
+bench: bench-deps
 	cmake --preset bench
 	cmake --build --preset bench -j $(JOBS)
 	./build/bench/bench/bimrock_bench

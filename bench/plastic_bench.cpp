@@ -6,7 +6,6 @@
 // LCP rows and Lemke pivots per increment (largest and mean), yielding and open points at the end,
 // and seconds per increment.
 #include <algorithm>
-#include <cmath>
 
 #include <benchmark/benchmark.h>
 
@@ -17,22 +16,9 @@
 namespace bimrock {
 namespace {
 
-CaseSpec plastic_brick_mass(int n_blocks, double tensile) {
-  CaseSpec c = bench::brick_mass_case(n_blocks);
-  JointStrength s;
-  s.cohesion = Softening::constant(0.1e6);
-  s.friction = Softening::constant(std::tan(35.0 * M_PI / 180.0));
-  s.dilation = 0.0;
-  s.tensile = Softening::constant(tensile);
-  c.joint_materials[0].strength = s;
-  StageSpec gravity{"gravity", c.loads, 5, std::nullopt, {0, "gravity"}};
-  c.loads = {};
-  c.stages = {gravity};
-  return c;
-}
-
 void run_plastic_gravity(benchmark::State& state, double tensile) {
-  const Model m = build_model(plastic_brick_mass(static_cast<int>(state.range(0)), tensile));
+  const Model m =
+      build_model(bench::plastic_brick_mass_case(static_cast<int>(state.range(0)), tensile, 5));
   PlasticResult r;
   for (auto _ : state)
     r = run_plastic_analysis(m);
