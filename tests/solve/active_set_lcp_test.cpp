@@ -2,6 +2,9 @@
 // all complementary bases (an independent oracle for small problems, lcp_enumeration_test.cpp),
 // planted solutions, and Lemke on larger positive definite problems, whose solution is unique.
 // On problems without a solution it must never answer "solved".
+#include <algorithm>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include <bimrock/solve/active_set_lcp.hpp>
@@ -68,6 +71,46 @@ TEST(ActiveSetLcp, PlantedSolutionIsFoundFromAWarmStart) {
   ASSERT_EQ(r.status, LcpStatus::solved);
   EXPECT_EQ(r.steps, 1) << "the right active set is confirmed by one solve";
   EXPECT_LE((r.z - z_star).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+// A dense problem seen column by column that counts the columns asked for.
+class CountingColumns final : public LcpColumns {
+ public:
+  explicit CountingColumns(const LcpProblem& p) : dense_(p) {}
+  [[nodiscard]] Eigen::Index size() const override { return dense_.size(); }
+  [[nodiscard]] const VectorXd& q() const override { return dense_.q(); }
+  [[nodiscard]] MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
+    for (Eigen::Index c : cols)
+      asked.push_back(c);
+    return dense_.columns(cols);
+  }
+  std::vector<Eigen::Index> asked;
+
+ private:
+  DenseLcpColumns dense_;
+};
+
+TEST(ActiveSetLcp, ColumnByColumnFormsOnlyTheActiveColumnsOnce) {
+  // A planted solution with 20 active rows out of 400: the same z as the dense solve, and only
+  // columns of rows that were active at some iteration are asked for, each once.
+  std::mt19937 rng(11);
+  const Eigen::Index n = 400;
+  const MatrixXd m = testing::random_spd(n, rng);
+  VectorXd z_star = VectorXd::Zero(n), w_star = VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    (i % 20 == 0 ? z_star(i) : w_star(i)) = 1.0 + 0.01 * static_cast<double>(i);
+  const LcpProblem p{m, testing::planted_q(m, z_star, w_star)};
+  CountingColumns columns(p);
+  const LcpResult r = ActiveSetLcp().solve(columns);
+  ASSERT_EQ(r.status, LcpStatus::solved);
+  EXPECT_LE((r.z - z_star).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LE(r.residuals.worst_relative(), 1e-9);
+  std::vector<Eigen::Index> sorted = columns.asked;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "asked twice";
+  EXPECT_LT(columns.asked.size(), static_cast<std::size_t>(n / 4));
+  for (Eigen::Index c : columns.asked)
+    EXPECT_TRUE(z_star(c) > 0.0 || p.q(c) < 0.0) << "column " << c << " was never active";
 }
 
 TEST(ActiveSetLcp, NeverClaimsASolutionThatDoesNotExist) {

@@ -5,8 +5,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <set>
+#include <utility>
 
 #include <bimrock/analysis/field_results.hpp>
+#include <bimrock/analysis/flexibility_columns.hpp>
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/assembly/kinematics.hpp>
 #include <bimrock/solve/active_set_lcp.hpp>
@@ -20,9 +23,61 @@ namespace {
 /// are a mechanism resolved only by round-off (see try_increment).
 constexpr double kMechanismRatio = 1e6;
 
+// The LCP solvers and what they keep from one increment to the next.
 struct LcpSolvers {
+  explicit LcpSolvers(FlexibilityColumns c) : columns(std::move(c)) {}
   ActiveSetLcp active_set;
   Lemke lemke;
+  FlexibilityColumns columns;                 // K^-1 phi_r of the rows that were ever active
+  std::set<std::pair<int, int>> last_active;  // (point, mode) yielding in the last increment
+};
+
+// The LCP of one round given column by column (eqs. 24, 28): M = N - C K^-1 Phi, plus under
+// displacement control the term that keeps the monitor on its path; q = -f0 - C dU_load,
+// shifted by the old gaps because the unknown of an opening row is the total gap.
+class IncrementLcp final : public LcpColumns {
+ public:
+  IncrementLcp(const YieldSystem& sys, FlexibilityColumns& y, Eigen::VectorXd q,
+               const Eigen::VectorXd& gap_old, const Eigen::VectorXd* control,
+               Eigen::VectorXd control_term)
+      : sys_(sys), y_(y), control_(control), control_term_(std::move(control_term)) {
+    q_ = std::move(q);
+    std::vector<Eigen::Index> open;
+    for (Eigen::Index r = 0; r < gap_old.size(); ++r)
+      if (gap_old(r) != 0.0)
+        open.push_back(r);
+    const Eigen::MatrixXd m_open = columns(open);
+    for (std::size_t k = 0; k < open.size(); ++k)
+      q_ -= m_open.col(static_cast<Eigen::Index>(k)) * gap_old(open[k]);
+  }
+  [[nodiscard]] Eigen::Index size() const override { return sys_.size(); }
+  [[nodiscard]] const Eigen::VectorXd& q() const override { return q_; }
+  [[nodiscard]] Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
+    y_.prepare(sys_, cols);
+    Eigen::MatrixXd out(size(), static_cast<Eigen::Index>(cols.size()));
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      const Eigen::VectorXd& y = y_.column(sys_, cols[k]);
+      auto col = out.col(static_cast<Eigen::Index>(k));
+      col = sys_.n.col(cols[k]) - sys_.c * y;
+      if (control_)
+        col += control_term_ * control_->dot(y);
+    }
+    return out;
+  }
+  // The whole matrix, for Lemke (which needs every column).
+  [[nodiscard]] LcpProblem dense() {
+    std::vector<Eigen::Index> all(static_cast<std::size_t>(size()));
+    for (Eigen::Index r = 0; r < size(); ++r)
+      all[static_cast<std::size_t>(r)] = r;
+    return {columns(all), q_};
+  }
+
+ private:
+  const YieldSystem& sys_;
+  FlexibilityColumns& y_;
+  const Eigen::VectorXd* control_;
+  Eigen::VectorXd control_term_;
+  Eigen::VectorXd q_;
 };
 
 // What one stage needs besides the state: the factor of K and the stage's reference load.
@@ -158,65 +213,72 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     clock.lap("increments: yield rows");
     const int m = sys.size();
     t.lcp_size = m;
-    // solve_lcp: nu = -f0 - C dU + N lambda with dU = dfactor x_ref + K^-1 Phi lambda.
-    const Eigen::MatrixXd y =
-        m > 0 ? ctx.k.solve(Eigen::MatrixXd(sys.phi)) : Eigen::MatrixXd(model.n_dofs(), 0);
+    // solve_lcp: nu = -f0 - C dU + N lambda with dU = dfactor x_ref + K^-1 Phi lambda; under
+    // displacement control dfactor = (step - h . lambda) / rate, h_r = control . K^-1 phi_r,
+    // keeps the monitor on its prescribed path.
     const Eigen::VectorXd cx = sys.c * ctx.x_ref;
-    Eigen::MatrixXd lcp_m = sys.n - sys.c * y;
-    Eigen::VectorXd lcp_q;
-    Eigen::VectorXd h;
-    if (control) {
-      // dfactor = (step - h . lambda) / rate keeps the monitor on its prescribed path.
-      h = y.transpose() * ctx.control;
-      lcp_m += cx * h.transpose() / ctx.control_rate;
-      lcp_q = -sys.f0 - cx * (step / ctx.control_rate);
-    } else {
-      lcp_q = -sys.f0 - cx * step;
-    }
+    const Eigen::VectorXd lcp_q = control
+                                      ? Eigen::VectorXd(-sys.f0 - cx * (step / ctx.control_rate))
+                                      : Eigen::VectorXd(-sys.f0 - cx * step);
     // The opening multiplier is the total gap z = gap_old + lambda (it may close again).
     Eigen::VectorXd gap_old = Eigen::VectorXd::Zero(m);
-    for (int r = 0; r < m; ++r)
-      if (ctx.points[sys.rows[r].point].is_interface() && sys.rows[r].mode == kOpeningMode)
-        gap_old(r) = s.points[sys.rows[r].point].gap;
+    Eigen::VectorXd warm = Eigen::VectorXd::Zero(m);
+    for (int r = 0; r < m; ++r) {
+      const YieldRow& row = sys.rows[r];
+      if (ctx.points[row.point].is_interface() && row.mode == kOpeningMode)
+        gap_old(r) = s.points[row.point].gap;
+      if (gap_old(r) > 0.0 || solvers.last_active.count({row.point, row.mode}))
+        warm(r) = 1.0;
+    }
+    const double solved_before = solvers.columns.seconds();
+    IncrementLcp lcp(sys, solvers.columns, lcp_q, gap_old, control ? &ctx.control : nullptr,
+                     control ? Eigen::VectorXd(cx / ctx.control_rate) : Eigen::VectorXd());
     Eigen::VectorXd z = Eigen::VectorXd::Zero(m);
-    clock.lap("increments: LCP matrix");
+    clock.lap("increments: LCP matrix", "increments: K^-1 Phi columns",
+              solvers.columns.seconds() - solved_before);
     if (m > 0) {
-      // solve_lcp: the active-set method first (a few dense solves, warm-started from the open
-      // joints); Lemke where it does not converge, and it alone decides a collapse.
-      const LcpProblem problem{lcp_m, lcp_q - lcp_m * gap_old};
+      // solve_lcp: the active-set method first (warm-started from the rows that yielded in the
+      // last increment and the open joints; only the columns of active rows are formed); Lemke
+      // on the whole matrix where it does not converge, and it alone decides a collapse.
+      const double columns_before = solvers.columns.seconds();
       LcpResult r;
       if (opt.active_set) {
-        r = solvers.active_set.solve(problem, gap_old.maxCoeff() > 0.0 ? &gap_old : nullptr);
+        r = solvers.active_set.solve(lcp, warm.maxCoeff() > 0.0 ? &warm : nullptr);
         t.active_set_iterations += r.steps;
       }
       if (r.status != LcpStatus::solved) {
-        r = solvers.lemke.solve(problem);
+        if (opt.active_set && std::getenv("BIMROCK_DEBUG_LCP"))
+          std::fprintf(stderr, "active set m=%d: %s after %d, worst residual %g\n", m,
+                       to_string(r.status), r.steps, r.residuals.worst_relative());
+        r = solvers.lemke.solve(lcp.dense());
         t.pivots += r.steps;
       }
-      clock.lap("increments: LCP");
+      clock.lap("increments: LCP", "increments: K^-1 Phi columns",
+                solvers.columns.seconds() - columns_before);
       if (r.status == LcpStatus::no_solution) {
         t.status = Trial::Status::collapse;
         t.rows = sys.rows;
         if (r.ray.size() == m) {
           t.ray = r.ray;
-          t.du = y * r.ray;
+          t.du = solvers.columns.combine(sys, r.ray);
         }
         return t;
       }
-      if (r.status == LcpStatus::solved && !control && m > 0) {
+      if (r.status == LcpStatus::solved && !control) {
         // A mechanism that round-off turned into a very soft mode: with stiff (penalty)
         // interfaces K^-1 is accurate only to ~ penalty x machine precision, so the exact null
         // direction of M (e.g. all blocks flowing plastically together) appears as a tiny
         // positive eigenvalue and the multipliers blow up instead of Lemke finding a ray.
         // Plastic displacements that dwarf the elastic ones of the same step are that mechanism.
         const Eigen::VectorXd flow = r.z - gap_old;
-        const double plastic = (y * flow).cwiseAbs().maxCoeff();
+        const Eigen::VectorXd plastic_du = solvers.columns.combine(sys, flow);
+        const double plastic = plastic_du.cwiseAbs().maxCoeff();
         const double elastic = std::abs(step) * ctx.x_ref.cwiseAbs().maxCoeff();
         if (plastic > kMechanismRatio * elastic) {
           t.status = Trial::Status::collapse;
           t.rows = sys.rows;
           t.ray = flow.cwiseAbs() / flow.cwiseAbs().maxCoeff();
-          t.du = y * flow / flow.cwiseAbs().maxCoeff();
+          t.du = plastic_du / flow.cwiseAbs().maxCoeff();
           return t;
         }
       }
@@ -226,7 +288,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
                        to_string(r.status), r.residuals.worst_relative());
         if (std::getenv("BIMROCK_DEBUG_LCP_DUMP")) {
           std::ofstream dump(std::getenv("BIMROCK_DEBUG_LCP_DUMP"));
-          write_lcp(dump, {lcp_m, lcp_q - lcp_m * gap_old});
+          write_lcp(dump, lcp.dense());
         }
         t.status = Trial::Status::failed;
         return t;
@@ -234,9 +296,10 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       z = r.z;
     }
     const Eigen::VectorXd lambda = z - gap_old;
-    const double dfactor =
-        control ? (step - (m > 0 ? h.dot(lambda) : 0.0)) / ctx.control_rate : step;
-    t.du = dfactor * ctx.x_ref + y * lambda;
+    const Eigen::VectorXd plastic_du =
+        m > 0 ? solvers.columns.combine(sys, lambda) : Eigen::VectorXd::Zero(model.n_dofs());
+    const double dfactor = control ? (step - ctx.control.dot(plastic_du)) / ctx.control_rate : step;
+    t.du = dfactor * ctx.x_ref + plastic_du;
     t.next = s;
     t.next.u += t.du;
     t.next.stage_factor += dfactor;
@@ -251,6 +314,10 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         candidate[p] = added = true;
     }
     if (!added) {
+      solvers.last_active.clear();
+      for (int r = 0; r < m; ++r)
+        if (lambda(r) != 0.0 || z(r) > 0.0)
+          solvers.last_active.insert({sys.rows[r].point, sys.rows[r].mode});
       t.rows = sys.rows;
       t.lambda = lambda;
       t.status = Trial::Status::carried;
@@ -332,7 +399,9 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.points = make_yield_points(model);
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
-  LcpSolvers solvers;
+  // The columns kept may take as much memory as the factor of K itself.
+  LcpSolvers solvers(
+      FlexibilityColumns(k, std::max<std::int64_t>(64 << 20, 12 * k.factor_nonzeros())));
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
     StageContext ctx{model, result.points, k, stage, {}, {}, 0.0, &result.timings};

@@ -74,6 +74,16 @@ class LapTimer {
     timings_->add(phase, std::chrono::duration<double>(now - last_).count());
     last_ = now;
   }
+  /// As lap(phase), but `part_seconds` of the time (measured inside it) go to phase `part`.
+  void lap(const std::string& phase, const std::string& part, double part_seconds) {
+    if (!timings_)
+      return;
+    const auto now = std::chrono::steady_clock::now();
+    const double all = std::chrono::duration<double>(now - last_).count();
+    timings_->add(part, part_seconds);
+    timings_->add(phase, std::max(0.0, all - part_seconds));
+    last_ = now;
+  }
 
  private:
   Timings* timings_;

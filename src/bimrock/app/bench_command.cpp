@@ -113,8 +113,8 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
   const double before = static_cast<double>(current_memory_bytes());
   reset_peak_memory();
   auto start = Clock::now();
-  // Loaded to 1.25 times the shear at which the top row would slide: collapse within the stage.
-  const Model model = build_model(wall_case(n, increments, 1.25 * wall_collapse_shear()));
+  // Pushed to 1.2 times the closed-form collapse thrust: collapses within the stage.
+  const Model model = build_model(abutment_case(n, increments, 1.2 * abutment_collapse_shear()));
   add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
   PlasticOptions options;
   options.track_memory = true;
@@ -122,12 +122,18 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
   PlasticResult result;
   {
     PlasticResultsWriter writer(model, {}, scratch / "plastic");
-    result = run_plastic_analysis(model, options,
-                                  [&](const IncrementRecord& r, const AnalysisState& st) {
-                                    const auto w = Clock::now();
-                                    writer.on_increment(r, st);
-                                    writing += seconds_since(w);
-                                  });
+    result = run_plastic_analysis(
+        model, options, [&](const IncrementRecord& r, const AnalysisState& st) {
+          const auto w = Clock::now();
+          writer.on_increment(r, st);
+          if (std::getenv("BIMROCK_BENCH_VERBOSE"))
+            fmt::print(stderr,
+                       "  stage {} inc {} factor {:.4f} lcp {} yielding {} open {} as-it {} pivots "
+                       "{} rounds {} {:.3f} s\n",
+                       r.stage, r.increment, r.stage_factor, r.lcp_size, r.yielding_points,
+                       r.open_points, r.active_set_iterations, r.pivots, r.rounds, r.seconds);
+          writing += seconds_since(w);
+        });
     run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
     start = Clock::now();
     (void)writer.finish(result);

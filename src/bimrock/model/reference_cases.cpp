@@ -101,4 +101,64 @@ CaseSpec wall_case(int n_blocks, int increments, double shear) {
   return c;
 }
 
+namespace {
+constexpr double kAbutmentCohesion = 50e3;
+constexpr double kAbutmentFriction = 35.0 * M_PI / 180.0;
+constexpr double kAbutmentTension = 50e3;
+constexpr double kAbutmentWidth = 2.0;     // [m] of the loaded strip
+constexpr double kAbutmentSetback = 2.0;   // [m] from the strip to the cliff
+constexpr double kPressurePerShear = 0.5;  // the thrust's normal over its shear component
+}  // namespace
+
+double abutment_collapse_shear() {
+  // The top row from the strip's inner end to the cliff slides on its bed joint and tears off
+  // its vertical joint at the strip's inner end (tension), pushed by tau B and held down by its
+  // weight and the pressure (DESIGN.md: the joint law): tau B = c L + sigma_t h + (gamma h L +
+  // kPressurePerShear tau B) tan(phi).
+  const double b = kAbutmentWidth, l = kAbutmentWidth + kAbutmentSetback, h = kBrickHeight;
+  const double t = std::tan(kAbutmentFriction);
+  return (kAbutmentCohesion * l + kAbutmentTension * h + 26e3 * h * l * t) /
+         (b * (1.0 - kPressurePerShear * t));
+}
+
+CaseSpec abutment_case(int n_blocks, int increments, double shear) {
+  const double size = kBrickHeight;
+  const int ny = std::max(2, static_cast<int>(std::lround(std::sqrt(n_blocks / 2.0))));
+  const int nx = std::max(
+      2 * ny, static_cast<int>(std::ceil(2.0 * (kAbutmentWidth + kAbutmentSetback) / size)));
+  const double width = nx * size, height = ny * size;
+  CaseSpec c;
+  c.file = "abutment(" + std::to_string(n_blocks) + ")";
+  c.block_materials = {granite()};
+  JointMaterial joint = example1_joint();
+  JointStrength s;
+  s.cohesion = Softening::constant(kAbutmentCohesion);
+  s.friction = Softening::constant(std::tan(kAbutmentFriction));
+  s.dilation = std::tan(kAbutmentFriction);
+  s.tensile = Softening::constant(kAbutmentTension);
+  joint.strength = s;
+  c.joint_materials = {joint};
+  add_blocks(c, brick_pattern(nx, ny, size, size, Stagger::rows));
+  c.default_joint = "joint";
+  c.supports.push_back(
+      {line({0, 0}, {width, 0}, "base"), SupportKind::fixed, std::nullopt, {0, "base"}});
+  c.supports.push_back(
+      {line({0, 0}, {0, height}, "left"), SupportKind::roller, std::nullopt, {0, "left"}});
+  // The strip [x0, x1] on the top, its ends on multiples of the block size (corners of the top
+  // row whether or not it is shifted).
+  const double x1 = width - kAbutmentSetback, x0 = x1 - kAbutmentWidth;
+  c.monitors.push_back({"abutment", Vec2(x1, height), {0, "monitors[0]"}});
+  StageSpec gravity{"gravity", {}, 1, std::nullopt, {0, "stages[0]"}};
+  gravity.loads.gravity = Vec2(0, -1);
+  StageSpec load{"thrust", {}, increments, std::nullopt, {0, "stages[1]"}};
+  // On the top edge (outward normal +y) the tangent s = (-n_y, n_x) = (-1, 0): a negative shear
+  // pushes towards the cliff (+x).
+  load.loads.tractions.push_back({line({x0, height}, {x1, height}, "abutment"),
+                                  -kPressurePerShear * shear,
+                                  -shear,
+                                  {0, "abutment"}});
+  c.stages = {gravity, load};
+  return c;
+}
+
 }  // namespace bimrock

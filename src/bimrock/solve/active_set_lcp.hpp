@@ -4,7 +4,8 @@
 /// solve M_AA z_A = -q_A with z = 0 elsewhere, take as the new A the rows where z_i > w_i, and
 /// repeat until A does not change: then z > 0 on A and w >= 0 elsewhere, a solution.
 ///
-/// Each iteration costs one dense LU of the active block (|A|^3 / 3), and the iterations are few
+/// Each iteration costs one dense LU of the active block (|A|^3 / 3) and the columns of M of the
+/// rows that became active for the first time, and the iterations are few
 /// (typically 2 to 10, nearly independent of the size) where Lemke needs a pivot of O(n^2) per
 /// row that enters: the fast route for increments with many active rows. It converges for
 /// M-matrices and in practice for the positive semi-definite and near-P matrices of an
@@ -14,6 +15,7 @@
 #include <utility>
 
 #include <bimrock/solve/lcp.hpp>
+#include <bimrock/solve/lcp_columns.hpp>
 
 namespace bimrock {
 
@@ -34,6 +36,10 @@ class ActiveSetLcp final : public LcpSolver {
   ///        rows with q_i < 0).
   [[nodiscard]] LcpResult solve(const LcpProblem& problem,
                                 const Eigen::VectorXd* warm_start = nullptr) override;
+  /// The same on a problem given column by column: only the columns of rows that are active at
+  /// some iteration are asked for, so with a few hundred active rows among thousands of
+  /// candidates the dense M is never formed.
+  [[nodiscard]] LcpResult solve(LcpColumns& problem, const Eigen::VectorXd* warm_start = nullptr);
 
  private:
   ActiveSetOptions options_;

@@ -1,4 +1,5 @@
 #include <bimrock/solve/lcp.hpp>
+#include <bimrock/solve/lcp_columns.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -46,9 +47,10 @@ double ratio(double a, double b) {
 
 }  // namespace
 
-LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z) {
-  const Eigen::VectorXd w = problem.m * z + problem.q;
-  const Eigen::VectorXd s = problem.m.cwiseAbs() * z.cwiseAbs() + problem.q.cwiseAbs();
+namespace {
+
+// Residuals of z given w = M z + q and the size of the terms of each w_i, s = |M| |z| + |q|.
+LcpResiduals measure(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const Eigen::VectorXd& s) {
   const double z_scale = z.size() == 0 ? 0.0 : z.cwiseAbs().maxCoeff();
   LcpResiduals r;
   for (Eigen::Index i = 0; i < z.size(); ++i) {
@@ -61,6 +63,29 @@ LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z) {
     r.complementarity = std::max(r.complementarity, pair);
   }
   return r;
+}
+
+}  // namespace
+
+LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z) {
+  return measure(z, problem.m * z + problem.q,
+                 problem.m.cwiseAbs() * z.cwiseAbs() + problem.q.cwiseAbs());
+}
+
+LcpResult make_lcp_result(const Eigen::VectorXd& q, const std::vector<Eigen::Index>& support,
+                          const Eigen::MatrixXd& support_columns, LcpStatus status,
+                          Eigen::VectorXd z, int steps) {
+  Eigen::VectorXd zs(static_cast<Eigen::Index>(support.size()));
+  for (std::size_t k = 0; k < support.size(); ++k)
+    zs(static_cast<Eigen::Index>(k)) = z(support[k]);
+  LcpResult result;
+  result.status = status;
+  result.w = support_columns * zs + q;
+  result.residuals =
+      measure(z, result.w, support_columns.cwiseAbs() * zs.cwiseAbs() + q.cwiseAbs());
+  result.z = std::move(z);
+  result.steps = steps;
+  return result;
 }
 
 LcpResult make_lcp_result(const LcpProblem& problem, LcpStatus status, Eigen::VectorXd z,

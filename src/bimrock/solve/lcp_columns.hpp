@@ -1,0 +1,47 @@
+#pragma once
+/// @file An LCP whose matrix is given column by column. In the analysis M = N - C K^-1 Phi: each
+/// column costs a back-solve with the factor of K, so a problem with thousands of candidate rows
+/// of which a few hundred become active must never be formed whole. A solver asks only for the
+/// columns of the rows it makes active (the implementation may cache them across increments).
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <bimrock/solve/lcp.hpp>
+
+namespace bimrock {
+
+class LcpColumns {
+ public:
+  virtual ~LcpColumns() = default;
+  [[nodiscard]] virtual Eigen::Index size() const = 0;
+  [[nodiscard]] virtual const Eigen::VectorXd& q() const = 0;
+  /// The columns `cols` of M, as a size() x cols.size() matrix.
+  [[nodiscard]] virtual Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) = 0;
+};
+
+/// A dense LcpProblem seen column by column.
+class DenseLcpColumns final : public LcpColumns {
+ public:
+  explicit DenseLcpColumns(const LcpProblem& problem) : problem_(problem) {}
+  [[nodiscard]] Eigen::Index size() const override { return problem_.size(); }
+  [[nodiscard]] const Eigen::VectorXd& q() const override { return problem_.q; }
+  [[nodiscard]] Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
+    Eigen::MatrixXd out(problem_.size(), static_cast<Eigen::Index>(cols.size()));
+    for (std::size_t k = 0; k < cols.size(); ++k)
+      out.col(static_cast<Eigen::Index>(k)) = problem_.m.col(cols[k]);
+    return out;
+  }
+
+ private:
+  const LcpProblem& problem_;
+};
+
+/// The result for a z that is zero outside `support`, given the columns of M on the support:
+/// w = M_support z_support + q, and the residuals measured as measure() does.
+[[nodiscard]] LcpResult make_lcp_result(const Eigen::VectorXd& q,
+                                        const std::vector<Eigen::Index>& support,
+                                        const Eigen::MatrixXd& support_columns, LcpStatus status,
+                                        Eigen::VectorXd z, int steps);
+
+}  // namespace bimrock
