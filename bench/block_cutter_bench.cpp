@@ -2,11 +2,13 @@
 // sets. The argument N = (100 m / spacing)^2, the number of spacing-sized squares in the domain:
 // N = 100 (10 m, the CI smoke size), 2500 (2 m), 10000 (1 m), 40000 (0.5 m). Three sets in
 // general position give about sum |sin(dip_i - dip_j)| * N crossings inside, hence about as
-// many blocks. Run `make bench`; report medians of the repetitions.
+// many blocks. Run `make bench`; report medians of the repetitions. peak_rss_MiB is the
+// process's resident-set high-water mark during the cuts.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 
+#include <bimrock/analysis/memory_probe.hpp>
 #include <bimrock/geometry/block_cutter.hpp>
 
 namespace bimrock {
@@ -32,12 +34,16 @@ void BM_CutBlocks(benchmark::State& state) {
   const CutOptions options{.min_block_area = 0.01 * spacing * spacing};
   std::size_t n_blocks = 0;
   std::size_t n_vertices = 0;
+  // The process's peak resident set during the cuts (freed heap of earlier runs is reused, so
+  // every run sees about the same peak).
+  reset_peak_memory();
   for (auto _ : state) {
     const BlockCut cut = cut_blocks(d, traces, options);
     n_blocks = cut.blocks.size();
     n_vertices = cut.vertices.size();
     benchmark::DoNotOptimize(cut.blocks.data());
   }
+  state.counters["peak_rss_MiB"] = static_cast<double>(peak_memory_bytes()) / (1024.0 * 1024.0);
   state.counters["spacing_m"] = spacing;
   state.counters["traces"] = static_cast<double>(traces.size());
   state.counters["blocks"] = static_cast<double>(n_blocks);

@@ -11,6 +11,7 @@
 #include <bimrock/solve/lcp_enumeration.hpp>
 #include <bimrock/solve/lemke.hpp>
 
+#include "solve/counting_columns.hpp"
 #include "solve/random_lcp.hpp"
 
 namespace bimrock {
@@ -73,23 +74,6 @@ TEST(ActiveSetLcp, PlantedSolutionIsFoundFromAWarmStart) {
   EXPECT_LE((r.z - z_star).cwiseAbs().maxCoeff(), 1e-10);
 }
 
-// A dense problem seen column by column that counts the columns asked for.
-class CountingColumns final : public LcpColumns {
- public:
-  explicit CountingColumns(const LcpProblem& p) : dense_(p) {}
-  [[nodiscard]] Eigen::Index size() const override { return dense_.size(); }
-  [[nodiscard]] const VectorXd& q() const override { return dense_.q(); }
-  [[nodiscard]] MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
-    for (Eigen::Index c : cols)
-      asked.push_back(c);
-    return dense_.columns(cols);
-  }
-  std::vector<Eigen::Index> asked;
-
- private:
-  DenseLcpColumns dense_;
-};
-
 TEST(ActiveSetLcp, ColumnByColumnFormsOnlyTheActiveColumnsOnce) {
   // A planted solution with 20 active rows out of 400: the same z as the dense solve, and only
   // columns of rows that were active at some iteration are asked for, each once.
@@ -100,7 +84,7 @@ TEST(ActiveSetLcp, ColumnByColumnFormsOnlyTheActiveColumnsOnce) {
   for (Eigen::Index i = 0; i < n; ++i)
     (i % 20 == 0 ? z_star(i) : w_star(i)) = 1.0 + 0.01 * static_cast<double>(i);
   const LcpProblem p{m, testing::planted_q(m, z_star, w_star)};
-  CountingColumns columns(p);
+  testing::CountingColumns columns(p);
   const LcpResult r = ActiveSetLcp().solve(columns);
   ASSERT_EQ(r.status, LcpStatus::solved);
   EXPECT_LE((r.z - z_star).cwiseAbs().maxCoeff(), 1e-10);
@@ -130,7 +114,66 @@ TEST(ActiveSetLcp, NeverClaimsASolutionThatDoesNotExist) {
     if (r.status == LcpStatus::solved) {
       EXPECT_LE(r.residuals.worst_relative(), 1e-9) << seed;
     }
+    if (r.status == LcpStatus::no_solution) {  // only with a certificate: the oracle agrees
+      EXPECT_EQ(oracle.status, LcpStatus::no_solution) << seed;
+    }
   }
+}
+
+TEST(ActiveSetLcp, ASingularActiveBlockThatIsAMechanismProvesTheCollapse) {
+  // [1 -1; -1 1], q = (-1, -1): both rows start active, the block is singular with kernel
+  // (1, 1), and M (1, 1) = 0, q . (1, 1) = -2 < 0: Farkas' certificate, found without Lemke.
+  const LcpProblem p{MatrixXd{{1.0, -1.0}, {-1.0, 1.0}}, VectorXd{{-1.0, -1.0}}};
+  const LcpResult r = ActiveSetLcp().solve(p);
+  ASSERT_EQ(r.status, LcpStatus::no_solution);
+  ASSERT_EQ(r.ray.size(), 2);
+  EXPECT_NEAR(r.ray(0), 1.0, 1e-12);
+  EXPECT_NEAR(r.ray(1), 1.0, 1e-12);
+}
+
+TEST(ActiveSetLcp, ASingularActiveBlockOfASolvableProblemIsNoProofOfCollapse) {
+  // [1 1; 1 1], q = (-1, -1) is solved by z = (1, 0) (w = (0, 0)); the singular block's kernel
+  // (1, -1) is no certificate, so the method gives up (Lemke takes over), never no_solution.
+  const LcpProblem p{MatrixXd{{1.0, 1.0}, {1.0, 1.0}}, VectorXd{{-1.0, -1.0}}};
+  const LcpResult r = ActiveSetLcp().solve(p);
+  EXPECT_NE(r.status, LcpStatus::no_solution);
+  EXPECT_EQ(LcpEnumeration().solve(p).status, LcpStatus::solved);
+}
+
+// Three modes of one point in a two-dimensional stress space: M = A A^T with the rows of A
+// (1, 0), (0, 1), (1, 1) has rank 2. With q = (-1, -1, -1) the solution is z = (1, 1, 0),
+// w = (0, 0, 1) (by hand).
+class ThreeModesOfOnePoint final : public LcpColumns {
+ public:
+  explicit ThreeModesOfOnePoint(bool grouped) : grouped_(grouped) {
+    const MatrixXd a{{1.0, 0.0}, {0.0, 1.0}, {1.0, 1.0}};
+    p_ = {a * a.transpose(), VectorXd::Constant(3, -1.0)};
+  }
+  [[nodiscard]] Eigen::Index size() const override { return 3; }
+  [[nodiscard]] const VectorXd& q() const override { return p_.q; }
+  [[nodiscard]] MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
+    return DenseLcpColumns(p_).columns(cols);
+  }
+  [[nodiscard]] bool symmetric() const override { return true; }
+  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override { return grouped_ ? 0 : row; }
+  [[nodiscard]] int group_rank(Eigen::Index /*row*/) const override { return grouped_ ? 2 : 1; }
+
+ private:
+  bool grouped_;
+  LcpProblem p_;
+};
+
+TEST(ActiveSetLcp, AtMostTheRankOfAGroupIsActiveAtOnce) {
+  ThreeModesOfOnePoint ungrouped(false);
+  EXPECT_NE(ActiveSetLcp().solve(ungrouped).status, LcpStatus::solved)
+      << "all three rows active: a singular block";
+  ThreeModesOfOnePoint grouped(true);
+  const LcpResult r = ActiveSetLcp().solve(grouped);
+  ASSERT_EQ(r.status, LcpStatus::solved);
+  EXPECT_NEAR(r.z(0), 1.0, 1e-12);
+  EXPECT_NEAR(r.z(1), 1.0, 1e-12);
+  EXPECT_EQ(r.z(2), 0.0);
+  EXPECT_NEAR(r.w(2), 1.0, 1e-12);
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
+#include <bimrock/solve/working_set_lcp.hpp>
 
 namespace bimrock {
 namespace {
@@ -37,10 +38,14 @@ struct LcpSolvers {
 // shifted by the old gaps because the unknown of an opening row is the total gap.
 class IncrementLcp final : public LcpColumns {
  public:
-  IncrementLcp(const YieldSystem& sys, FlexibilityColumns& y, Eigen::VectorXd q,
-               const Eigen::VectorXd& gap_old, const Eigen::VectorXd* control,
+  IncrementLcp(const YieldSystem& sys, const std::vector<YieldPoint>& points, FlexibilityColumns& y,
+               Eigen::VectorXd q, const Eigen::VectorXd& gap_old, const Eigen::VectorXd* control,
                Eigen::VectorXd control_term)
-      : sys_(sys), y_(y), control_(control), control_term_(std::move(control_term)) {
+      : sys_(sys),
+        points_(points),
+        y_(y),
+        control_(control),
+        control_term_(std::move(control_term)) {
     q_ = std::move(q);
     std::vector<Eigen::Index> open;
     for (Eigen::Index r = 0; r < gap_old.size(); ++r)
@@ -51,6 +56,28 @@ class IncrementLcp final : public LcpColumns {
       q_ -= m_open.col(static_cast<Eigen::Index>(k)) * gap_old(open[k]);
   }
   [[nodiscard]] Eigen::Index size() const override { return sys_.size(); }
+  // The modes of one yield point: at most 2 independent at a joint point (sigma_n, tau), 3 at
+  // a block (its plane stress components).
+  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override {
+    return sys_.rows[static_cast<std::size_t>(row)].point;
+  }
+  [[nodiscard]] int group_rank(Eigen::Index row) const override {
+    return points_[static_cast<std::size_t>(sys_.rows[static_cast<std::size_t>(row)].point)]
+                   .is_interface()
+               ? 2
+               : 3;
+  }
+  // Associated flow (C = Phi^T, N symmetric) under load control: M is symmetric (the control
+  // term is not).
+  [[nodiscard]] bool symmetric() const override {
+    if (control_)
+      return false;
+    const SparseMatrix asymmetry = sys_.c - SparseMatrix(sys_.phi.transpose());
+    const double n_max = sys_.n.size() > 0 ? sys_.n.cwiseAbs().maxCoeff() : 0.0;
+    return asymmetry.norm() <= 1e-12 * sys_.c.norm() &&
+           (sys_.n.size() == 0 ||
+            (sys_.n - sys_.n.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * n_max);
+  }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return q_; }
   [[nodiscard]] Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
     y_.prepare(sys_, cols);
@@ -74,6 +101,7 @@ class IncrementLcp final : public LcpColumns {
 
  private:
   const YieldSystem& sys_;
+  const std::vector<YieldPoint>& points_;
   FlexibilityColumns& y_;
   const Eigen::VectorXd* control_;
   Eigen::VectorXd control_term_;
@@ -231,7 +259,8 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         warm(r) = 1.0;
     }
     const double solved_before = solvers.columns.seconds();
-    IncrementLcp lcp(sys, solvers.columns, lcp_q, gap_old, control ? &ctx.control : nullptr,
+    IncrementLcp lcp(sys, ctx.points, solvers.columns, lcp_q, gap_old,
+                     control ? &ctx.control : nullptr,
                      control ? Eigen::VectorXd(cx / ctx.control_rate) : Eigen::VectorXd());
     Eigen::VectorXd z = Eigen::VectorXd::Zero(m);
     clock.lap("increments: LCP matrix", "increments: K^-1 Phi columns",
@@ -246,10 +275,24 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         r = solvers.active_set.solve(lcp, warm.maxCoeff() > 0.0 ? &warm : nullptr);
         t.active_set_iterations += r.steps;
       }
-      if (r.status != LcpStatus::solved) {
-        if (opt.active_set && std::getenv("BIMROCK_DEBUG_LCP"))
+      if (opt.active_set && r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
+        if (std::getenv("BIMROCK_DEBUG_LCP"))
           std::fprintf(stderr, "active set m=%d: %s after %d, worst residual %g\n", m,
                        to_string(r.status), r.steps, r.residuals.worst_relative());
+        // Lemke on the rows that were violated or active (and those its solution violates):
+        // the columns of the other rows are never formed.
+        std::vector<Eigen::Index> initial;
+        for (int i = 0; i < m; ++i)
+          if (warm(i) > 0.0 || (r.z.size() == m && r.z(i) > 0.0))
+            initial.push_back(i);
+        r = solve_on_working_set(lcp, initial, solvers.lemke);
+        t.pivots += r.steps;
+        if (std::getenv("BIMROCK_DEBUG_LCP"))
+          std::fprintf(stderr, "  working set of %zu rows first: %s, %d pivots\n", initial.size(),
+                       to_string(r.status), r.steps);
+      }
+      if (r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
+        // Lemke on the whole matrix: it decides a collapse that no certificate has proven.
         r = solvers.lemke.solve(lcp.dense());
         t.pivots += r.steps;
       }

@@ -1,12 +1,79 @@
 #include <bimrock/solve/active_set_lcp.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
 namespace bimrock {
+namespace {
+
+// Keeps at most group_rank rows of each group active, those of highest priority: more would
+// make the active block singular (three modes of a joint point in its two-dimensional stress
+// space), which ends the method where a basic solution uses at most that many.
+void limit_to_group_rank(const LcpColumns& problem, const Eigen::VectorXd& priority,
+                         std::vector<char>& active) {
+  std::vector<std::pair<Eigen::Index, Eigen::Index>> members;  // (group, row) of active rows
+  for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(active.size()); ++i)
+    if (active[static_cast<std::size_t>(i)])
+      members.emplace_back(problem.group(i), i);
+  std::sort(members.begin(), members.end());
+  for (std::size_t a = 0; a < members.size();) {
+    std::size_t b = a;
+    while (b < members.size() && members[b].first == members[a].first)
+      ++b;
+    const auto rank = static_cast<std::size_t>(problem.group_rank(members[a].second));
+    if (b - a > rank) {
+      std::vector<Eigen::Index> rows;
+      for (std::size_t k = a; k < b; ++k)
+        rows.push_back(members[k].second);
+      std::sort(rows.begin(), rows.end(), [&](Eigen::Index x, Eigen::Index y) {
+        return priority(x) > priority(y) || (priority(x) == priority(y) && x < y);
+      });
+      for (std::size_t k = rank; k < rows.size(); ++k)
+        active[static_cast<std::size_t>(rows[k])] = 0;
+    }
+    a = b;
+  }
+}
+
+// A singular active block of a symmetric M may be the mechanism of a collapse: its kernel
+// vector v, signed to be non-negative and extended by zeros, certifies that the LCP has no
+// solution when also M v <= 0 off the active rows and q . v < 0 (Farkas, see lcp.hpp; for
+// symmetric M, M^T v is the active columns times v). Returns the certificate or an empty vector.
+Eigen::VectorXd kernel_certificate(const Eigen::MatrixXd& a, const Eigen::MatrixXd& m_rows,
+                                   const Eigen::VectorXd& q,
+                                   const std::vector<Eigen::Index>& rows) {
+  const Eigen::Index k = a.rows();
+  Eigen::VectorXd s(k);  // symmetric diagonal scaling: rows of M mix units
+  for (Eigen::Index i = 0; i < k; ++i)
+    s(i) = a(i, i) > 0.0 ? 1.0 / std::sqrt(a(i, i)) : 1.0;
+  const Eigen::MatrixXd scaled = s.asDiagonal() * (0.5 * (a + a.transpose())) * s.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(scaled);
+  if (eigen.info() != Eigen::Success)
+    return {};
+  Eigen::VectorXd v = s.asDiagonal() * eigen.eigenvectors().col(0);  // smallest eigenvalue
+  if (v.sum() < 0.0)
+    v = -v;
+  const double tiny = 1e-8 * v.cwiseAbs().maxCoeff();
+  if (!(v.array() >= -tiny).all())
+    return {};
+  v = v.cwiseMax(0.0);
+  Eigen::VectorXd ray = Eigen::VectorXd::Zero(q.size());
+  for (Eigen::Index r = 0; r < k; ++r)
+    ray(rows[static_cast<std::size_t>(r)]) = v(r);
+  if (!certifies_infeasibility(q, ray, m_rows * v, m_rows.cwiseAbs() * v,
+                               m_rows.cwiseAbs().maxCoeff()))
+    return {};
+  return ray / ray.maxCoeff();
+}
+
+}  // namespace
 
 LcpResult ActiveSetLcp::solve(const LcpProblem& problem, const Eigen::VectorXd* warm_start) {
   check_lcp(problem);
@@ -45,6 +112,12 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
   std::vector<char> active(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i)
     active[static_cast<std::size_t>(i)] = warm_start ? (*warm_start)(i) > 0.0 : q(i) < 0.0;
+  {
+    Eigen::VectorXd priority = -q;
+    if (warm_start != nullptr)
+      priority += warm_start->cwiseMax(0.0) * (q.cwiseAbs().maxCoeff() + 1.0);
+    limit_to_group_rank(problem, priority, active);
+  }
   std::set<std::vector<char>> seen;  // an active set met twice is a cycle
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   std::vector<Eigen::Index> rows;
@@ -74,20 +147,31 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
     Eigen::VectorXd za = Eigen::VectorXd::Zero(k);
     if (k > 0) {
       const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
-      if (!(lu.rcond() > options_.singular_tolerance))
-        return result(LcpStatus::numerical_failure, iteration);
+      if (!(lu.rcond() > options_.singular_tolerance)) {
+        LcpResult failed = result(LcpStatus::numerical_failure, iteration);
+        if (problem.symmetric()) {
+          Eigen::VectorXd ray = kernel_certificate(a, m_rows, q, rows);
+          if (ray.size() == n) {
+            failed.status = LcpStatus::no_solution;
+            failed.ray = std::move(ray);
+          }
+        }
+        return failed;
+      }
       za = lu.solve(rhs);
       za += lu.solve(rhs - a * za);  // one step of iterative refinement
       for (Eigen::Index r = 0; r < k; ++r)
         z(rows[static_cast<std::size_t>(r)]) = za(r);
     }
     const Eigen::VectorXd w = m_rows * za + q;
+    std::vector<char> next(static_cast<std::size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i)
+      next[static_cast<std::size_t>(i)] = z(i) > w(i);
+    limit_to_group_rank(problem, z - w, next);
     bool changed = false;
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const char now = z(i) > w(i);
-      changed = changed || now != active[static_cast<std::size_t>(i)];
-      active[static_cast<std::size_t>(i)] = now;
-    }
+    for (Eigen::Index i = 0; i < n; ++i)
+      changed = changed || next[static_cast<std::size_t>(i)] != active[static_cast<std::size_t>(i)];
+    active = std::move(next);
     if (!changed) {
       // Rows of A whose multiplier is zero but for round-off are set to zero exactly.
       z = z.cwiseMax(0.0);

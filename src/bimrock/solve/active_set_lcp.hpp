@@ -9,9 +9,15 @@
 /// (typically 2 to 10, nearly independent of the size) where Lemke needs a pivot of O(n^2) per
 /// row that enters: the fast route for increments with many active rows. It converges for
 /// M-matrices and in practice for the positive semi-definite and near-P matrices of an
-/// increment; it cannot prove that no solution exists. So it only ever answers solved, or
-/// iteration_limit / numerical_failure (cycling, a singular active block, a result that fails
-/// the check): the caller then falls back to Lemke, which decides collapse.
+/// increment. Two safeguards for the increments near a collapse:
+/// - at most group_rank rows of a group (the modes of one yield point, LcpColumns::group) are
+///   active at once, those with the largest z_i - w_i: more would make the block singular;
+/// - a singular active block of a symmetric M (associated flow) is tested as the mechanism of a
+///   collapse: its kernel vector, if non-negative, M v <= 0 on every row and q . v < 0, is a
+///   Farkas certificate that no solution exists (no_solution, with the vector as the ray).
+/// Otherwise it answers solved, or iteration_limit / numerical_failure (cycling, a singular
+/// block that proves nothing, a result that fails the check): the caller then falls back to
+/// Lemke.
 #include <utility>
 
 #include <bimrock/solve/lcp.hpp>

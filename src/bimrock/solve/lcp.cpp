@@ -34,6 +34,22 @@ const char* to_string(LcpStatus status) {
   return "?";
 }
 
+bool certifies_infeasibility(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                             const Eigen::VectorXd& mtr, const Eigen::VectorXd& mtr_size,
+                             double m_max) {
+  // A kernel vector of a numerically singular active block is accurate to about a pivot
+  // tolerance; columns of M that are round-off residues of a cancellation (a mechanism) are held
+  // to a fraction of max|M| |r|_1 instead: far above their residues, far below a real stiffness.
+  constexpr double tol = 1e-8;
+  constexpr double floor_fraction = 1e-10;
+  if (r.size() == 0 || r.size() != q.size())
+    return false;
+  const double floor = floor_fraction * m_max * r.cwiseAbs().sum();
+  return (r.array() >= -tol * r.cwiseAbs().maxCoeff()).all() &&
+         (mtr.array() <= tol * mtr_size.array() + floor).all() &&
+         q.dot(r) < -tol * q.cwiseAbs().dot(r.cwiseAbs());
+}
+
 double LcpResiduals::worst_relative() const {
   return std::max({z_violation, w_violation, complementarity});
 }

@@ -65,6 +65,15 @@ struct LcpResult {
 [[nodiscard]] LcpResult make_lcp_result(const LcpProblem& problem, LcpStatus status,
                                         Eigen::VectorXd z, int steps);
 
+/// Whether r certifies that the LCP has no solution (Farkas): r >= 0, M^T r <= 0 and q . r < 0
+/// give r . w = (M^T r) . z + q . r < 0 for every z >= 0, so w >= 0 is impossible. Given
+/// mtr = M^T r and mtr_size = |M|^T |r| (the size of the terms each entry sums), each entry is
+/// held to a relative tolerance of 1e-8 and, for a column whose entries are all round-off
+/// residues of a cancellation (a mechanism), to 1e-10 * m_max * |r|_1 (m_max = max|M_ij|).
+[[nodiscard]] bool certifies_infeasibility(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                                           const Eigen::VectorXd& mtr,
+                                           const Eigen::VectorXd& mtr_size, double m_max);
+
 /// The interface every LCP solver implements, so Lemke, projected Gauss-Seidel and later a
 /// sparse or distributed backend sit side by side and are compared on the same problems.
 class LcpSolver {

@@ -18,12 +18,23 @@ class LcpColumns {
   [[nodiscard]] virtual const Eigen::VectorXd& q() const = 0;
   /// The columns `cols` of M, as a size() x cols.size() matrix.
   [[nodiscard]] virtual Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) = 0;
+  /// Whether M is symmetric (to round-off): then the columns of a set of rows are also their
+  /// rows, and M^T r can be formed from the columns of the support of r.
+  [[nodiscard]] virtual bool symmetric() const { return false; }
+  /// Rows that belong together (the modes of one yield point): at most group_rank(row) rows of
+  /// a group can be linearly independent (the dimension of the point's stress space), so an
+  /// active set with more of them has a singular block. Default: every row its own group.
+  [[nodiscard]] virtual Eigen::Index group(Eigen::Index row) const { return row; }
+  [[nodiscard]] virtual int group_rank(Eigen::Index /*row*/) const { return 1; }
 };
 
 /// A dense LcpProblem seen column by column.
 class DenseLcpColumns final : public LcpColumns {
  public:
-  explicit DenseLcpColumns(const LcpProblem& problem) : problem_(problem) {}
+  explicit DenseLcpColumns(const LcpProblem& problem)
+      : problem_(problem),
+        symmetric_((problem.m - problem.m.transpose()).cwiseAbs().maxCoeff() <=
+                   1e-12 * problem.m.cwiseAbs().maxCoeff()) {}
   [[nodiscard]] Eigen::Index size() const override { return problem_.size(); }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return problem_.q; }
   [[nodiscard]] Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
@@ -32,9 +43,11 @@ class DenseLcpColumns final : public LcpColumns {
       out.col(static_cast<Eigen::Index>(k)) = problem_.m.col(cols[k]);
     return out;
   }
+  [[nodiscard]] bool symmetric() const override { return symmetric_; }
 
  private:
   const LcpProblem& problem_;
+  bool symmetric_;
 };
 
 /// The result for a z that is zero outside `support`, given the columns of M on the support:

@@ -22,12 +22,6 @@ constexpr double kTie = 1e-12;
 /// the largest and still differ (measured on an LCP recorded at a sliding collapse, where an
 /// absolute tie of 1e-12 chose the wrong leaving row and ended on an infeasible basis).
 constexpr double kTieFloor = 1e-4;
-/// A kernel vector of a numerically singular active block is accurate to about the pivot
-/// tolerance; as an infeasibility certificate it is accepted to this relative accuracy.
-constexpr double kCertificateTolerance = 1e-8;
-/// Columns of M that are round-off residues of a cancellation (a mechanism) are held to this
-/// fraction of max|M| |r|_1 instead: far above their residues, far below a real stiffness.
-constexpr double kCertificateFloor = 1e-10;
 
 /// The problem Lemke pivots on: M^ = R M C (round-off entries removed), q^ = R q / sigma and the
 /// covering vector e^, so that z = sigma C z^ and the LCP is unchanged (positive diagonal
@@ -215,18 +209,12 @@ Eigen::VectorXd ray_direction(const Tableau& t, Index entering, const Eigen::Vec
   return size > 0.0 ? Eigen::VectorXd(r / size) : Eigen::VectorXd();
 }
 
-/// Whether r certifies that the LCP has no solution: r >= 0, M^T r <= 0 and q . r < 0 give
-/// r . w = (M^T r) . z + q . r < 0 for every z >= 0, so w >= 0 is impossible (Farkas).
-/// (M^T r)_j is compared with the terms it sums, (|M|^T |r|)_j, and, for a column whose entries
-/// are all round-off residues of a cancellation (a mechanism), with the size of M.
+/// Whether r certifies that the LCP has no solution (see lcp.hpp).
 bool certifies_infeasibility(const LcpProblem& p, const Eigen::VectorXd& r) {
-  const Eigen::VectorXd mtr = p.m.transpose() * r;
-  const Eigen::VectorXd size = p.m.cwiseAbs().transpose() * r.cwiseAbs();
-  const double tol = kCertificateTolerance;
-  const double floor = kCertificateFloor * p.m.cwiseAbs().maxCoeff() * r.cwiseAbs().sum();
-  return (r.array() >= -tol * r.cwiseAbs().maxCoeff()).all() &&
-         (mtr.array() <= tol * size.array() + floor).all() &&
-         p.q.dot(r) < -tol * p.q.cwiseAbs().dot(r.cwiseAbs());
+  return r.size() == p.size() &&
+         bimrock::certifies_infeasibility(p.q, r, p.m.transpose() * r,
+                                          p.m.cwiseAbs().transpose() * r.cwiseAbs(),
+                                          p.m.cwiseAbs().maxCoeff());
 }
 
 /// Solves the active set of the final basis again from the unscaled M and checks the result
