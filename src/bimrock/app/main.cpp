@@ -95,12 +95,13 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--elastic-sizes", bench.elastic_sizes, "blocks of the elastic brick mass")
       ->delimiter(',');
   bench_cmd
-      ->add_option("--plastic-sizes", bench.plastic_sizes, "blocks of the plastic footing model")
+      ->add_option("--plastic-sizes", bench.plastic_sizes, "blocks of the plastic abutment model")
       ->delimiter(',');
   bench_cmd
       ->add_option("--repetitions", bench.repetitions, "runs per size (the median is reported)")
       ->check(CLI::PositiveNumber);
-  bench_cmd->add_option("--increments", bench.increments, "increments of the footing stage")
+  bench_cmd
+      ->add_option("--increments", bench.increments, "increments of the abutment's loading stage")
       ->check(CLI::PositiveNumber);
   bench_cmd->add_option("--json", bench.json, "also write the table as JSON to this file");
   bench_cmd->add_option("--plot", bench.plot,

@@ -125,9 +125,34 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
   auto result = [&](LcpStatus status, int iteration) {
     return make_lcp_result(q, rows, m_rows, status, z, iteration);
   };
-  for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
-    if (!seen.insert(active).second)
-      return result(LcpStatus::iteration_limit, iteration);
+  // Near a degenerate solution (rows with z_i ~ w_i ~ 0) the block rule can cycle. Then it
+  // switches to Murty's rule from the last iterate: change only the violated row of least index
+  // (finite for P-matrices; here a safeguard, with its own cycle check).
+  bool single = false;
+  std::vector<char> last_active;  // the set of the last solve, and its w
+  Eigen::VectorXd last_w;
+  auto murty_step = [&]() {
+    active = last_active;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const bool is_active = active[static_cast<std::size_t>(i)] != 0;
+      if ((is_active && z(i) < 0.0) || (!is_active && last_w(i) < 0.0)) {
+        active[static_cast<std::size_t>(i)] = is_active ? 0 : 1;
+        break;
+      }
+    }
+  };
+  for (int iteration = 1; iteration <= 2 * options_.max_iterations; ++iteration) {
+    if (!single && iteration > options_.max_iterations)
+      break;
+    if (!seen.insert(active).second) {
+      if (single || last_w.size() == 0)
+        return result(LcpStatus::iteration_limit, iteration);
+      single = true;
+      seen.clear();
+      murty_step();
+      if (!seen.insert(active).second)
+        return result(LcpStatus::iteration_limit, iteration);
+    }
     rows.clear();
     for (Eigen::Index i = 0; i < n; ++i)
       if (active[static_cast<std::size_t>(i)])
@@ -171,7 +196,12 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
     bool changed = false;
     for (Eigen::Index i = 0; i < n; ++i)
       changed = changed || next[static_cast<std::size_t>(i)] != active[static_cast<std::size_t>(i)];
-    active = std::move(next);
+    last_active = active;
+    last_w = w;
+    if (single && changed)
+      murty_step();
+    else
+      active = std::move(next);
     if (!changed) {
       // Rows of A whose multiplier is zero but for round-off are set to zero exactly.
       z = z.cwiseMax(0.0);

@@ -26,6 +26,7 @@
 namespace bimrock {
 
 struct ActiveSetOptions {
+  /// Iterations of the block rule, and again as many of Murty's rule after a cycle.
   int max_iterations = 50;
   /// The result must satisfy LcpResiduals::worst_relative() <= accuracy.
   double accuracy = 1e-9;

@@ -11,10 +11,9 @@ LcpResult solve_on_working_set(LcpColumns& problem, const std::vector<Eigen::Ind
   std::vector<char> in_set(static_cast<std::size_t>(n), 0);
   for (Eigen::Index i : initial)
     in_set[static_cast<std::size_t>(i)] = 1;
-  if (initial.empty())
-    for (Eigen::Index i = 0; i < n; ++i)
-      if (q(i) < 0.0)
-        in_set[static_cast<std::size_t>(i)] = 1;
+  for (Eigen::Index i = 0; i < n; ++i)
+    if (q(i) < 0.0)
+      in_set[static_cast<std::size_t>(i)] = 1;
 
   std::vector<Eigen::Index> set;  // W, in increasing order
   Eigen::MatrixXd columns(n, 0);  // the columns of M on W, in the order of `set`
