@@ -120,6 +120,29 @@ TEST(ActiveSetLcp, NeverClaimsASolutionThatDoesNotExist) {
   }
 }
 
+TEST(ActiveSetLcp, MurtysRuleAfterACycleSolvesWhatTheBlockRuleCannot) {
+  // P-matrices (a unique solution, from the enumeration oracle) on which the block rule alone
+  // cycles: with the switch to Murty's rule every one of them is solved.
+  int cycled = 0;
+  for (unsigned seed = 1; seed <= 200; ++seed) {
+    std::mt19937 rng(seed);
+    const LcpProblem p{testing::random_skewed_positive_definite(4, rng),
+                       testing::random_vector(4, rng)};
+    const LcpResult oracle = LcpEnumeration().solve(p);
+    ASSERT_EQ(oracle.status, LcpStatus::solved) << seed;
+    ActiveSetOptions block_only;
+    block_only.murty_after_cycle = false;
+    if (ActiveSetLcp(block_only).solve(p).status == LcpStatus::solved)
+      continue;
+    ++cycled;
+    const LcpResult r = ActiveSetLcp().solve(p);
+    ASSERT_EQ(r.status, LcpStatus::solved) << seed;
+    EXPECT_LE((r.z - oracle.z).cwiseAbs().maxCoeff(), 1e-9 * oracle.z.cwiseAbs().maxCoeff())
+        << seed;
+  }
+  EXPECT_GE(cycled, 5) << "the problems must exercise the safeguard";
+}
+
 TEST(ActiveSetLcp, ASingularActiveBlockThatIsAMechanismProvesTheCollapse) {
   // [1 -1; -1 1], q = (-1, -1): both rows start active, the block is singular with kernel
   // (1, 1), and M (1, 1) = 0, q . (1, 1) = -2 < 0: Farkas' certificate, found without Lemke.

@@ -42,6 +42,15 @@ inline Eigen::MatrixXd random_p_matrix(Eigen::Index n, std::mt19937& rng) {
   return m;
 }
 
+/// Positive definite but far from symmetric: A A^T / n + 0.1 I plus a large skew part
+/// 3 (A - A^T), which leaves x^T M x > 0 unchanged: a P-matrix on which the block rule of the
+/// active-set method often cycles.
+inline Eigen::MatrixXd random_skewed_positive_definite(Eigen::Index n, std::mt19937& rng) {
+  const Eigen::MatrixXd a = random_matrix(n, n, rng);
+  return a * a.transpose() / static_cast<double>(n) + 0.1 * Eigen::MatrixXd::Identity(n, n) +
+         3.0 * (a - a.transpose());
+}
+
 /// q = w* - M z* for complementary z*, w* >= 0: the LCP (q, M) has the solution z* by
 /// construction.
 inline Eigen::VectorXd planted_q(const Eigen::MatrixXd& m, const Eigen::VectorXd& z_star,

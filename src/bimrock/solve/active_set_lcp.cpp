@@ -145,7 +145,7 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
     if (!single && iteration > options_.max_iterations)
       break;
     if (!seen.insert(active).second) {
-      if (single || last_w.size() == 0)
+      if (single || last_w.size() == 0 || !options_.murty_after_cycle)
         return result(LcpStatus::iteration_limit, iteration);
       single = true;
       seen.clear();

@@ -28,6 +28,8 @@ namespace bimrock {
 struct ActiveSetOptions {
   /// Iterations of the block rule, and again as many of Murty's rule after a cycle.
   int max_iterations = 50;
+  /// After a cycle of the block rule, go on with Murty's single-row rule (else give up).
+  bool murty_after_cycle = true;
   /// The result must satisfy LcpResiduals::worst_relative() <= accuracy.
   double accuracy = 1e-9;
   /// The active block is singular when the reciprocal condition estimate of its LU is below
