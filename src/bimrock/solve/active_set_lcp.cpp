@@ -125,6 +125,16 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
   auto result = [&](LcpStatus status, int iteration) {
     return make_lcp_result(q, rows, m_rows, status, z, iteration);
   };
+  // The last iterate, with multipliers that are negative only by round-off set to zero, if it
+  // passes the check: degenerate rows (z_i ~ w_i ~ 0) can make the rules flip a row of a
+  // solution back and forth.
+  auto solved_or = [&](LcpStatus status, int iteration) {
+    z = z.cwiseMax(0.0);
+    LcpResult r = result(LcpStatus::solved, iteration);
+    if (!r.z.allFinite() || !(r.residuals.worst_relative() <= options_.accuracy))
+      r.status = status;
+    return r;
+  };
   // Near a degenerate solution (rows with z_i ~ w_i ~ 0) the block rule can cycle. Then it
   // switches to Murty's rule from the last iterate: change only the violated row of least index
   // (finite for P-matrices; here a safeguard, with its own cycle check).
@@ -146,12 +156,12 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
       break;
     if (!seen.insert(active).second) {
       if (single || last_w.size() == 0 || !options_.murty_after_cycle)
-        return result(LcpStatus::iteration_limit, iteration);
+        return solved_or(LcpStatus::iteration_limit, iteration);
       single = true;
       seen.clear();
       murty_step();
       if (!seen.insert(active).second)
-        return result(LcpStatus::iteration_limit, iteration);
+        return solved_or(LcpStatus::iteration_limit, iteration);
     }
     rows.clear();
     for (Eigen::Index i = 0; i < n; ++i)
@@ -202,16 +212,10 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
       murty_step();
     else
       active = std::move(next);
-    if (!changed) {
-      // Rows of A whose multiplier is zero but for round-off are set to zero exactly.
-      z = z.cwiseMax(0.0);
-      LcpResult solved = result(LcpStatus::solved, iteration);
-      if (!solved.z.allFinite() || !(solved.residuals.worst_relative() <= options_.accuracy))
-        solved.status = LcpStatus::numerical_failure;
-      return solved;
-    }
+    if (!changed)
+      return solved_or(LcpStatus::numerical_failure, iteration);
   }
-  return result(LcpStatus::iteration_limit, options_.max_iterations);
+  return solved_or(LcpStatus::iteration_limit, options_.max_iterations);
 }
 
 }  // namespace bimrock
