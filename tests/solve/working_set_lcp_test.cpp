@@ -61,6 +61,16 @@ TEST(WorkingSetLcp, AgreesWithLemkeOnTheWholeProblem) {
   }
 }
 
+TEST(WorkingSetLcp, ANonNegativeQIsSolvedByZeroWithoutAnyColumn) {
+  const LcpProblem p{MatrixXd::Identity(3, 3), VectorXd{{0.0, 1.0, 2.0}}};
+  testing::CountingColumns columns(p);
+  Lemke lemke;
+  const LcpResult r = solve_on_working_set(columns, {}, lemke);
+  ASSERT_EQ(r.status, LcpStatus::solved);
+  EXPECT_EQ(r.z.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_TRUE(columns.asked.empty());
+}
+
 // [1 -1; -1 1] with q = (-1, -1) has no solution (w_0 + w_1 = -2 for every z; certificate
 // r = (1, 1)), embedded in a larger problem whose other rows are comfortably satisfied.
 LcpProblem infeasible_pair_in(Eigen::Index n, bool symmetric) {

@@ -1,6 +1,7 @@
 #include <bimrock/solve/working_set_lcp.hpp>
 
 #include <algorithm>
+#include <iterator>
 
 namespace bimrock {
 
@@ -8,6 +9,9 @@ LcpResult solve_on_working_set(LcpColumns& problem, const std::vector<Eigen::Ind
                                Lemke& lemke, const WorkingSetOptions& options) {
   const Eigen::Index n = problem.size();
   const Eigen::VectorXd& q = problem.q();
+  if ((q.array() >= 0.0).all())  // z = 0 solves it (also for n = 0)
+    return make_lcp_result(q, {}, Eigen::MatrixXd(n, 0), LcpStatus::solved,
+                           Eigen::VectorXd::Zero(n), 0);
   std::vector<char> in_set(static_cast<std::size_t>(n), 0);
   for (Eigen::Index i : initial)
     in_set[static_cast<std::size_t>(i)] = 1;
