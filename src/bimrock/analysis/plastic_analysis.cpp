@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -69,14 +70,16 @@ class IncrementLcp final : public LcpColumns {
   }
   // Associated flow (C = Phi^T, N symmetric) under load control: M is symmetric (the control
   // term is not).
+  // Checked on first use only: solvers ask when a collapse is to be proven.
   [[nodiscard]] bool symmetric() const override {
-    if (control_)
-      return false;
-    const SparseMatrix asymmetry = sys_.c - SparseMatrix(sys_.phi.transpose());
-    const double n_max = sys_.n.size() > 0 ? sys_.n.cwiseAbs().maxCoeff() : 0.0;
-    return asymmetry.norm() <= 1e-12 * sys_.c.norm() &&
-           (sys_.n.size() == 0 ||
-            (sys_.n - sys_.n.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * n_max);
+    if (!symmetric_) {
+      const SparseMatrix asymmetry = sys_.c - SparseMatrix(sys_.phi.transpose());
+      const double n_max = sys_.n.size() > 0 ? sys_.n.cwiseAbs().maxCoeff() : 0.0;
+      symmetric_ = !control_ && asymmetry.norm() <= 1e-12 * sys_.c.norm() &&
+                   (sys_.n.size() == 0 ||
+                    (sys_.n - sys_.n.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * n_max);
+    }
+    return *symmetric_;
   }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return q_; }
   [[nodiscard]] Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
@@ -106,6 +109,7 @@ class IncrementLcp final : public LcpColumns {
   const Eigen::VectorXd* control_;
   Eigen::VectorXd control_term_;
   Eigen::VectorXd q_;
+  mutable std::optional<bool> symmetric_;
 };
 
 // What one stage needs besides the state: the factor of K and the stage's reference load.

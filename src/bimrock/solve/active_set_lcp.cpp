@@ -63,14 +63,7 @@ Eigen::VectorXd kernel_certificate(const Eigen::MatrixXd& a, const Eigen::Matrix
   const double tiny = 1e-8 * v.cwiseAbs().maxCoeff();
   if (!(v.array() >= -tiny).all())
     return {};
-  v = v.cwiseMax(0.0);
-  Eigen::VectorXd ray = Eigen::VectorXd::Zero(q.size());
-  for (Eigen::Index r = 0; r < k; ++r)
-    ray(rows[static_cast<std::size_t>(r)]) = v(r);
-  if (!certifies_infeasibility(q, ray, m_rows * v, m_rows.cwiseAbs() * v,
-                               m_rows.cwiseAbs().maxCoeff()))
-    return {};
-  return ray / ray.maxCoeff();
+  return certified_ray(q, rows, m_rows, v.cwiseMax(0.0));
 }
 
 }  // namespace
@@ -113,9 +106,12 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
   for (Eigen::Index i = 0; i < n; ++i)
     active[static_cast<std::size_t>(i)] = warm_start ? (*warm_start)(i) > 0.0 : q(i) < 0.0;
   {
+    // Rows of the warm start first (above every -q_i), then the most violated.
     Eigen::VectorXd priority = -q;
     if (warm_start != nullptr)
-      priority += warm_start->cwiseMax(0.0) * (q.cwiseAbs().maxCoeff() + 1.0);
+      for (Eigen::Index i = 0; i < n; ++i)
+        if ((*warm_start)(i) > 0.0)
+          priority(i) += 2.0 * q.cwiseAbs().maxCoeff() + 1.0;
     limit_to_group_rank(problem, priority, active);
   }
   std::set<std::vector<char>> seen;  // an active set met twice is a cycle

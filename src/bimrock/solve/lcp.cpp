@@ -104,6 +104,19 @@ LcpResult make_lcp_result(const Eigen::VectorXd& q, const std::vector<Eigen::Ind
   return result;
 }
 
+Eigen::VectorXd certified_ray(const Eigen::VectorXd& q, const std::vector<Eigen::Index>& support,
+                              const Eigen::MatrixXd& support_columns,
+                              const Eigen::VectorXd& r_support) {
+  Eigen::VectorXd ray = Eigen::VectorXd::Zero(q.size());
+  for (std::size_t k = 0; k < support.size(); ++k)
+    ray(support[k]) = r_support(static_cast<Eigen::Index>(k));
+  if (!certifies_infeasibility(q, ray, support_columns * r_support,
+                               support_columns.cwiseAbs() * r_support.cwiseAbs(),
+                               support_columns.cwiseAbs().maxCoeff()))
+    return {};
+  return ray / ray.maxCoeff();
+}
+
 LcpResult make_lcp_result(const LcpProblem& problem, LcpStatus status, Eigen::VectorXd z,
                           int steps) {
   LcpResult result;

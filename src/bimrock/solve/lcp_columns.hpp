@@ -57,4 +57,12 @@ class DenseLcpColumns final : public LcpColumns {
                                         const Eigen::MatrixXd& support_columns, LcpStatus status,
                                         Eigen::VectorXd z, int steps);
 
+/// For symmetric M: r_support (on the rows `support`, zero elsewhere) as a Farkas certificate
+/// of the whole LCP (certifies_infeasibility in lcp.hpp), M^T r being the columns of the support
+/// times r_support. Returns the certificate scaled to max 1, or an empty vector if it is none.
+[[nodiscard]] Eigen::VectorXd certified_ray(const Eigen::VectorXd& q,
+                                            const std::vector<Eigen::Index>& support,
+                                            const Eigen::MatrixXd& support_columns,
+                                            const Eigen::VectorXd& r_support);
+
 }  // namespace bimrock

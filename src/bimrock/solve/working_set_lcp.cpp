@@ -57,17 +57,12 @@ LcpResult solve_on_working_set(LcpColumns& problem, const std::vector<Eigen::Ind
     const LcpResult local = lemke.solve(sub);
     pivots += local.steps;
     if (local.status == LcpStatus::no_solution && problem.symmetric() && local.ray.size() == k) {
-      // The sub-LCP's ray r_W, extended by zeros, certifies that the whole LCP has no solution
-      // if (M^T r)_i <= 0 on every row: for symmetric M that is the columns of W times r_W.
-      Eigen::VectorXd ray = Eigen::VectorXd::Zero(n);
-      for (Eigen::Index r = 0; r < k; ++r)
-        ray(set[static_cast<std::size_t>(r)]) = local.ray(r);
-      if (certifies_infeasibility(q, ray, columns * local.ray,
-                                  columns.cwiseAbs() * local.ray.cwiseAbs(),
-                                  columns.cwiseAbs().maxCoeff())) {
+      // The sub-LCP's ray r_W, extended by zeros, may certify the whole LCP.
+      Eigen::VectorXd ray = certified_ray(q, set, columns, local.ray);
+      if (ray.size() == n) {
         result = make_lcp_result(q, {}, Eigen::MatrixXd(n, 0), LcpStatus::no_solution,
                                  Eigen::VectorXd::Zero(n), pivots);
-        result.ray = ray;
+        result.ray = std::move(ray);
         return result;
       }
     }
