@@ -89,7 +89,7 @@ void increment_lcp(const ModelContext& ctx, const AnalysisState& before,
   const int m = sys.size();
   const Eigen::MatrixXd y = ctx.k.solve(Eigen::MatrixXd(sys.phi));  // K^-1 Phi
   LcpProblem& problem = lcp.problem;
-  problem.m = sys.n - sys.c * y;
+  problem.m = Eigen::MatrixXd(sys.n) - sys.c * y;
   Eigen::VectorXd gap_old = Eigen::VectorXd::Zero(m);
   for (int r = 0; r < m; ++r) {
     const YieldRow& row = sys.rows[r];

@@ -43,7 +43,7 @@ Model plastic_assembly(double friction, double dilation, bool blocks_yield) {
 
 Eigen::MatrixXd lcp_matrix(const Model& m, const YieldSystem& sys) {
   const Eigen::MatrixXd k = full_from_lower(assemble_stiffness_lower(m)).toDense();
-  return sys.n - Eigen::MatrixXd(sys.c) * k.ldlt().solve(Eigen::MatrixXd(sys.phi));
+  return Eigen::MatrixXd(sys.n) - Eigen::MatrixXd(sys.c) * k.ldlt().solve(Eigen::MatrixXd(sys.phi));
 }
 
 std::vector<int> all_points(const std::vector<YieldPoint>& points) {

@@ -27,7 +27,7 @@ class FlexibilityColumns {
   void prepare(const YieldSystem& sys, const std::vector<Eigen::Index>& rows);
   /// K^-1 phi_r for row r of sys; prepare() must have been called for it.
   [[nodiscard]] const Eigen::VectorXd& column(const YieldSystem& sys, Eigen::Index r) const;
-  /// sum_r y_r v_r over the rows where v is non-zero (prepared here if need be).
+  /// sum_r y_r v_r = K^-1 Phi v, by one back-solve (no column is formed or kept).
   [[nodiscard]] Eigen::VectorXd combine(const YieldSystem& sys, const Eigen::VectorXd& v);
 
   [[nodiscard]] std::int64_t solved_columns() const { return solved_; }

@@ -48,13 +48,16 @@ class IncrementLcp final : public LcpColumns {
         control_(control),
         control_term_(std::move(control_term)) {
     q_ = std::move(q);
-    std::vector<Eigen::Index> open;
-    for (Eigen::Index r = 0; r < gap_old.size(); ++r)
-      if (gap_old(r) != 0.0)
-        open.push_back(r);
-    const Eigen::MatrixXd m_open = columns(open);
-    for (std::size_t k = 0; k < open.size(); ++k)
-      q_ -= m_open.col(static_cast<Eigen::Index>(k)) * gap_old(open[k]);
+    if (gap_old.size() > 0 && gap_old.cwiseAbs().maxCoeff() > 0.0)
+      q_ -= times(gap_old);
+  }
+  // M v with one back-solve (no column of M formed).
+  [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& v) {
+    const Eigen::VectorXd y = y_.combine(sys_, v);
+    Eigen::VectorXd out = sys_.n * v - sys_.c * y;
+    if (control_)
+      out += control_term_ * control_->dot(y);
+    return out;
   }
   [[nodiscard]] Eigen::Index size() const override { return sys_.size(); }
   // The modes of one yield point: at most 2 independent at a joint point (sigma_n, tau), 3 at
@@ -74,10 +77,9 @@ class IncrementLcp final : public LcpColumns {
   [[nodiscard]] bool symmetric() const override {
     if (!symmetric_) {
       const SparseMatrix asymmetry = sys_.c - SparseMatrix(sys_.phi.transpose());
-      const double n_max = sys_.n.size() > 0 ? sys_.n.cwiseAbs().maxCoeff() : 0.0;
+      const SparseMatrix n_asymmetry = sys_.n - SparseMatrix(sys_.n.transpose());
       symmetric_ = !control_ && asymmetry.norm() <= 1e-12 * sys_.c.norm() &&
-                   (sys_.n.size() == 0 ||
-                    (sys_.n - sys_.n.transpose()).cwiseAbs().maxCoeff() <= 1e-12 * n_max);
+                   n_asymmetry.norm() <= 1e-12 * sys_.n.norm();
     }
     return *symmetric_;
   }
@@ -88,7 +90,7 @@ class IncrementLcp final : public LcpColumns {
     for (std::size_t k = 0; k < cols.size(); ++k) {
       const Eigen::VectorXd& y = y_.column(sys_, cols[k]);
       auto col = out.col(static_cast<Eigen::Index>(k));
-      col = sys_.n.col(cols[k]) - sys_.c * y;
+      col = Eigen::VectorXd(sys_.n.col(cols[k])) - sys_.c * y;
       if (control_)
         col += control_term_ * control_->dot(y);
     }
@@ -168,7 +170,7 @@ double first_kink(const Model& model, const std::vector<YieldPoint>& points,
     const double d = law.distance;
     if (!std::isfinite(d) || law.peak == law.residual)
       return;
-    const double margin = 1e-9 * std::max(d, 1e-300);
+    const double margin = Softening::kKinkTolerance * std::max(d, 1e-300);
     if (old_kappa < d - margin && new_kappa > d + margin)
       fraction = std::min(fraction, (d - old_kappa) / (new_kappa - old_kappa));
   };

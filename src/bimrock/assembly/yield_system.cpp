@@ -8,7 +8,7 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
   YieldSystem sys;
   std::vector<Eigen::Triplet<double, std::int64_t>> phi;
   std::vector<Eigen::Triplet<double, std::int64_t>> c;
-  std::vector<Eigen::MatrixXd> n_blocks;
+  std::vector<Eigen::Triplet<double, std::int64_t>> n;
   std::vector<double> f0;
   for (int p : candidates) {
     const YieldPoint& point = points[p];
@@ -35,19 +35,19 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
         }
       }
     }
-    n_blocks.push_back(w * (y.a * d * y.g.transpose() + y.h));
+    const Eigen::MatrixXd n_point = w * (y.a * d * y.g.transpose() + y.h);
+    for (Eigen::Index j = 0; j < n_point.cols(); ++j)
+      for (Eigen::Index i = 0; i < n_point.rows(); ++i)
+        if (n_point(i, j) != 0.0)
+          n.emplace_back(first + i, first + j, n_point(i, j));
   }
   const int m = sys.size();
   sys.phi.resize(model.n_dofs(), m);
   sys.phi.setFromTriplets(phi.begin(), phi.end());
   sys.c.resize(m, model.n_dofs());
   sys.c.setFromTriplets(c.begin(), c.end());
-  sys.n = Eigen::MatrixXd::Zero(m, m);
-  int offset = 0;
-  for (const Eigen::MatrixXd& b : n_blocks) {
-    sys.n.block(offset, offset, b.rows(), b.cols()) = b;
-    offset += static_cast<int>(b.rows());
-  }
+  sys.n.resize(m, m);
+  sys.n.setFromTriplets(n.begin(), n.end());
   sys.f0 = Eigen::Map<const Eigen::VectorXd>(f0.data(), m);
   return sys;
 }

@@ -22,7 +22,8 @@ struct YieldSystem {
   std::vector<YieldRow> rows;
   SparseMatrix phi;      ///< n_dofs x m: plastic loads of unit multipliers
   SparseMatrix c;        ///< m x n_dofs: rate of each (scaled) yield function with dU
-  Eigen::MatrixXd n;     ///< m x m: local plastic coupling and hardening (block diagonal)
+  SparseMatrix n;        ///< m x m: local plastic coupling and hardening (block diagonal: the
+                         ///< modes of one point are consecutive rows)
   Eigen::VectorXd f0;    ///< m: (scaled) yield function values at the current state
   std::vector<Eigen::Vector3d> flow;  ///< per row: the flow direction g (first 2 for joints)
   [[nodiscard]] int size() const { return static_cast<int>(rows.size()); }

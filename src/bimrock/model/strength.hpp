@@ -20,9 +20,12 @@ struct Softening {
     if (kappa >= distance) return residual;
     return peak + (residual - peak) * (kappa / distance);
   }
+  /// Relative distance to the kink within which kappa counts as having reached it: a step cut
+  /// at the kink lands there only to round-off, and the next step must take the residual slope.
+  static constexpr double kKinkTolerance = 1e-9;
   /// d value / d kappa at kappa, for the next increment (0 once the residual is reached).
   [[nodiscard]] double slope(double kappa) const {
-    if (kappa >= distance || !std::isfinite(distance)) return 0.0;
+    if (kappa >= distance * (1.0 - kKinkTolerance) || !std::isfinite(distance)) return 0.0;
     return (residual - peak) / distance;
   }
 };
