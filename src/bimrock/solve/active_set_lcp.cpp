@@ -16,7 +16,7 @@ namespace {
 // Keeps at most group_rank rows of each group active, those of highest priority: more would
 // make the active block singular (three modes of a joint point in its two-dimensional stress
 // space), which ends the method where a basic solution uses at most that many.
-void limit_to_group_rank(const LcpColumns& problem, const Eigen::VectorXd& priority,
+void limit_to_group_rank(const ActiveSetEquations& problem, const Eigen::VectorXd& priority,
                          std::vector<char>& active) {
   std::vector<std::pair<Eigen::Index, Eigen::Index>> members;  // (group, row) of active rows
   for (Eigen::Index i = 0; i < static_cast<Eigen::Index>(active.size()); ++i)
@@ -66,6 +66,87 @@ Eigen::VectorXd kernel_certificate(const Eigen::MatrixXd& a, const Eigen::Matrix
   return certified_ray(q, rows, m_rows, v.cwiseMax(0.0));
 }
 
+// The active-set equations of an LCP given column by column: the columns of the active rows
+// are asked for once each (kept for later iterations) and the active block is solved by a
+// dense LU.
+class ColumnEquations final : public ActiveSetEquations {
+ public:
+  ColumnEquations(LcpColumns& problem, double singular_tolerance)
+      : problem_(problem),
+        singular_tolerance_(singular_tolerance),
+        slot_(static_cast<std::size_t>(problem.size()), -1),
+        known_(problem.size(), 0),
+        m_rows_(problem.size(), 0) {}
+  [[nodiscard]] Eigen::Index size() const override { return problem_.size(); }
+  [[nodiscard]] const Eigen::VectorXd& q() const override { return problem_.q(); }
+  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override { return problem_.group(row); }
+  [[nodiscard]] int group_rank(Eigen::Index row) const override {
+    return problem_.group_rank(row);
+  }
+
+  Solution solve(const std::vector<Eigen::Index>& active) override {
+    const Eigen::Index n = size();
+    rows_ = active;
+    fetch(rows_);
+    const auto k = static_cast<Eigen::Index>(rows_.size());
+    m_rows_.resize(n, k);
+    for (Eigen::Index c = 0; c < k; ++c)
+      m_rows_.col(c) = known_.col(slot_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(c)])]);
+    Eigen::MatrixXd a(k, k);
+    Eigen::VectorXd rhs(k);
+    for (Eigen::Index r = 0; r < k; ++r) {
+      rhs(r) = -q()(rows_[static_cast<std::size_t>(r)]);
+      a.row(r) = m_rows_.row(rows_[static_cast<std::size_t>(r)]);
+    }
+    Solution out;
+    out.z = Eigen::VectorXd::Zero(n);
+    Eigen::VectorXd za = Eigen::VectorXd::Zero(k);
+    if (k > 0) {
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
+      if (!(lu.rcond() > singular_tolerance_)) {
+        if (problem_.symmetric())
+          out.ray = kernel_certificate(a, m_rows_, q(), rows_);
+        return out;
+      }
+      za = lu.solve(rhs);
+      za += lu.solve(rhs - a * za);  // one step of iterative refinement
+      for (Eigen::Index r = 0; r < k; ++r)
+        out.z(rows_[static_cast<std::size_t>(r)]) = za(r);
+    }
+    out.w = m_rows_ * za + q();
+    out.regular = true;
+    return out;
+  }
+
+  LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override {
+    return make_lcp_result(q(), rows_, m_rows_, status, std::move(z), steps);
+  }
+
+ private:
+  // Asks for the columns of `rows` not known yet: column slot_[i] of known_ is column i of M.
+  void fetch(const std::vector<Eigen::Index>& rows) {
+    std::vector<Eigen::Index> missing;
+    for (Eigen::Index i : rows)
+      if (slot_[static_cast<std::size_t>(i)] < 0)
+        missing.push_back(i);
+    if (missing.empty())
+      return;
+    const Eigen::MatrixXd fresh = problem_.columns(missing);
+    const Eigen::Index first = known_.cols();
+    known_.conservativeResize(size(), first + fresh.cols());
+    known_.rightCols(fresh.cols()) = fresh;
+    for (std::size_t k = 0; k < missing.size(); ++k)
+      slot_[static_cast<std::size_t>(missing[k])] = first + static_cast<Eigen::Index>(k);
+  }
+
+  LcpColumns& problem_;
+  double singular_tolerance_;
+  std::vector<Eigen::Index> slot_;
+  Eigen::MatrixXd known_;
+  std::vector<Eigen::Index> rows_;  // the active rows of the last solve
+  Eigen::MatrixXd m_rows_;          // and their columns of M
+};
+
 }  // namespace
 
 LcpResult ActiveSetLcp::solve(const LcpProblem& problem, const Eigen::VectorXd* warm_start) {
@@ -75,32 +156,17 @@ LcpResult ActiveSetLcp::solve(const LcpProblem& problem, const Eigen::VectorXd* 
 }
 
 LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_start) {
+  ColumnEquations equations(problem, options_.singular_tolerance);
+  return solve(equations, warm_start);
+}
+
+LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd* warm_start) {
   const Eigen::Index n = problem.size();
   const Eigen::VectorXd& q = problem.q();
   if ((q.array() >= 0.0).all())
-    return make_lcp_result(q, {}, Eigen::MatrixXd(n, 0), LcpStatus::solved,
-                           Eigen::VectorXd::Zero(n), 0);
+    return problem.result(LcpStatus::solved, Eigen::VectorXd::Zero(n), 0);
   if (warm_start != nullptr && warm_start->size() != n)
     throw std::invalid_argument("active-set LCP: warm start of the wrong size");
-
-  // The columns of M asked for so far: column slot[i] of `known` is column i of M. Only the
-  // columns of rows that are active at some iteration are ever formed.
-  std::vector<Eigen::Index> slot(static_cast<std::size_t>(n), -1);
-  Eigen::MatrixXd known(n, 0);
-  auto fetch = [&](const std::vector<Eigen::Index>& rows) {
-    std::vector<Eigen::Index> missing;
-    for (Eigen::Index i : rows)
-      if (slot[static_cast<std::size_t>(i)] < 0)
-        missing.push_back(i);
-    if (missing.empty())
-      return;
-    const Eigen::MatrixXd fresh = problem.columns(missing);
-    const Eigen::Index first = known.cols();
-    known.conservativeResize(n, first + fresh.cols());
-    known.rightCols(fresh.cols()) = fresh;
-    for (std::size_t k = 0; k < missing.size(); ++k)
-      slot[static_cast<std::size_t>(missing[k])] = first + static_cast<Eigen::Index>(k);
-  };
 
   std::vector<char> active(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i)
@@ -116,10 +182,8 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
   }
   std::set<std::vector<char>> seen;  // an active set met twice is a cycle
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-  std::vector<Eigen::Index> rows;
-  Eigen::MatrixXd m_rows(n, 0);  // the columns of M on the active rows
   auto result = [&](LcpStatus status, int iteration) {
-    return make_lcp_result(q, rows, m_rows, status, z, iteration);
+    return problem.result(status, z, iteration);
   };
   // The last iterate, with multipliers that are negative only by round-off set to zero, if it
   // passes the check: degenerate rows (z_i ~ w_i ~ 0) can make the rules flip a row of a
@@ -159,42 +223,22 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
       if (!seen.insert(active).second)
         return solved_or(LcpStatus::iteration_limit, iteration);
     }
-    rows.clear();
+    std::vector<Eigen::Index> rows;
     for (Eigen::Index i = 0; i < n; ++i)
       if (active[static_cast<std::size_t>(i)])
         rows.push_back(i);
-    fetch(rows);
-    const auto k = static_cast<Eigen::Index>(rows.size());
-    m_rows.resize(n, k);
-    for (Eigen::Index c = 0; c < k; ++c)
-      m_rows.col(c) = known.col(slot[static_cast<std::size_t>(rows[static_cast<std::size_t>(c)])]);
-    Eigen::MatrixXd a(k, k);
-    Eigen::VectorXd rhs(k);
-    for (Eigen::Index r = 0; r < k; ++r) {
-      rhs(r) = -q(rows[static_cast<std::size_t>(r)]);
-      a.row(r) = m_rows.row(rows[static_cast<std::size_t>(r)]);
-    }
-    z.setZero();
-    Eigen::VectorXd za = Eigen::VectorXd::Zero(k);
-    if (k > 0) {
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
-      if (!(lu.rcond() > options_.singular_tolerance)) {
-        LcpResult failed = result(LcpStatus::numerical_failure, iteration);
-        if (problem.symmetric()) {
-          Eigen::VectorXd ray = kernel_certificate(a, m_rows, q, rows);
-          if (ray.size() == n) {
-            failed.status = LcpStatus::no_solution;
-            failed.ray = std::move(ray);
-          }
-        }
-        return failed;
+    ActiveSetEquations::Solution step = problem.solve(rows);
+    if (!step.regular) {
+      z.setZero();
+      LcpResult failed = result(LcpStatus::numerical_failure, iteration);
+      if (step.ray.size() == n) {
+        failed.status = LcpStatus::no_solution;
+        failed.ray = std::move(step.ray);
       }
-      za = lu.solve(rhs);
-      za += lu.solve(rhs - a * za);  // one step of iterative refinement
-      for (Eigen::Index r = 0; r < k; ++r)
-        z(rows[static_cast<std::size_t>(r)]) = za(r);
+      return failed;
     }
-    const Eigen::VectorXd w = m_rows * za + q;
+    z = std::move(step.z);
+    const Eigen::VectorXd& w = step.w;
     std::vector<char> next(static_cast<std::size_t>(n));
     for (Eigen::Index i = 0; i < n; ++i)
       next[static_cast<std::size_t>(i)] = z(i) > w(i);

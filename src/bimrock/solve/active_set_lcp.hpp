@@ -37,6 +37,29 @@ struct ActiveSetOptions {
   double singular_tolerance = 1e-13;
 };
 
+/// What the active-set iteration needs of an LCP, whatever represents M (its columns, or the
+/// sparse parts of M = N - C K^-1 Phi): q, the groups of rows, and the equations of one active
+/// set.
+class ActiveSetEquations {
+ public:
+  virtual ~ActiveSetEquations() = default;
+  [[nodiscard]] virtual Eigen::Index size() const = 0;
+  [[nodiscard]] virtual const Eigen::VectorXd& q() const = 0;
+  /// As LcpColumns::group and group_rank.
+  [[nodiscard]] virtual Eigen::Index group(Eigen::Index row) const { return row; }
+  [[nodiscard]] virtual int group_rank(Eigen::Index /*row*/) const { return 1; }
+  struct Solution {
+    bool regular = false;  ///< false: M_AA is singular (or could not be factorized)
+    Eigen::VectorXd z;     ///< zero off the active rows, M_AA z_A = -q_A on them
+    Eigen::VectorXd w;     ///< M z + q
+    Eigen::VectorXd ray;   ///< if singular: a Farkas certificate of no solution, if one was found
+  };
+  /// The solution of the equations of the active rows `active` (sorted).
+  [[nodiscard]] virtual Solution solve(const std::vector<Eigen::Index>& active) = 0;
+  /// z (zero off the rows of the last solve) with its w and residuals on the whole LCP.
+  [[nodiscard]] virtual LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) = 0;
+};
+
 class ActiveSetLcp final : public LcpSolver {
  public:
   explicit ActiveSetLcp(ActiveSetOptions options = {}) : options_(std::move(options)) {}
@@ -49,6 +72,9 @@ class ActiveSetLcp final : public LcpSolver {
   /// some iteration are asked for, so with a few hundred active rows among thousands of
   /// candidates the dense M is never formed.
   [[nodiscard]] LcpResult solve(LcpColumns& problem, const Eigen::VectorXd* warm_start = nullptr);
+  /// The iteration on any representation of the active-set equations.
+  [[nodiscard]] LcpResult solve(ActiveSetEquations& problem,
+                                const Eigen::VectorXd* warm_start = nullptr);
 
  private:
   ActiveSetOptions options_;
