@@ -15,6 +15,7 @@
 #include <bimrock/assembly/kinematics.hpp>
 #include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/lemke.hpp>
+#include <bimrock/solve/reduced_tangent.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 #include <bimrock/solve/working_set_lcp.hpp>
 
@@ -31,6 +32,7 @@ struct LcpSolvers {
   ActiveSetLcp active_set;
   Lemke lemke;
   FlexibilityColumns columns;                 // K^-1 phi_r of the rows that were ever active
+  SparseCholesky tangent;                     // the reduced tangent (its analysis is kept)
   std::set<std::pair<int, int>> last_active;  // (point, mode) yielding in the last increment
 };
 
@@ -119,6 +121,7 @@ struct StageContext {
   const Model& model;
   const std::vector<YieldPoint>& points;
   const SparseCholesky& k;
+  const SparseMatrix& k_lower;
   const Stage& stage;
   Eigen::VectorXd x_ref;       // K^-1 P_stage: displacement of the whole stage load, elastic
   Eigen::VectorXd control;     // displacement control: u_monitor . direction = control . U
@@ -139,6 +142,7 @@ struct Trial {
   int lcp_size = 0;
   int pivots = 0;
   int active_set_iterations = 0;
+  int tangent_factorizations = 0;
   int rounds = 0;
 };
 
@@ -277,8 +281,25 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       // on the whole matrix where it does not converge, and it alone decides a collapse.
       const double columns_before = solvers.columns.seconds();
       LcpResult r;
-      if (opt.active_set) {
-        r = solvers.active_set.solve(lcp, warm.maxCoeff() > 0.0 ? &warm : nullptr);
+      const Eigen::VectorXd* warm_start = warm.maxCoeff() > 0.0 ? &warm : nullptr;
+      if (opt.active_set && opt.reduced_tangent_rows >= 0 &&
+          warm.sum() >= opt.reduced_tangent_rows && lcp.symmetric()) {
+        // Many rows active: the equations of each active set on the sparse reduced tangent.
+        SplitLcp split{&ctx.k_lower, &sys.c, &sys.phi, &sys.n, lcp.q(), {}, {}};
+        for (int i = 0; i < m; ++i) {
+          split.group.push_back(lcp.group(i));
+          split.group_rank.push_back(lcp.group_rank(i));
+        }
+        ReducedTangentEquations equations(split, ctx.k, solvers.tangent);
+        r = solvers.active_set.solve(equations, warm_start);
+        t.active_set_iterations += r.steps;
+        t.tangent_factorizations += equations.factorizations();
+        if (std::getenv("BIMROCK_DEBUG_LCP") && r.status != LcpStatus::solved)
+          std::fprintf(stderr, "reduced tangent m=%d: %s after %d, worst residual %g\n", m,
+                       to_string(r.status), r.steps, r.residuals.worst_relative());
+      }
+      if (opt.active_set && r.status != LcpStatus::solved) {
+        r = solvers.active_set.solve(lcp, warm_start);
         t.active_set_iterations += r.steps;
       }
       if (opt.active_set && r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
@@ -397,6 +418,7 @@ IncrementRecord record(const Model& model, const Trial& t, int stage, int increm
   r.lcp_size = t.lcp_size;
   r.pivots = t.pivots;
   r.active_set_iterations = t.active_set_iterations;
+  r.tangent_factorizations = t.tangent_factorizations;
   r.rounds = t.rounds;
   r.seconds = seconds;
   return r;
@@ -434,8 +456,8 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     check_supports(model);
   }
   SparseCholesky k;
+  SparseMatrix lower;  // kept: the reduced tangent is K minus the plastic part
   {
-    SparseMatrix lower;
     {
       ScopedTimer t(result.timings, "assemble");
       lower = assemble_stiffness_lower(model);
@@ -453,7 +475,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       FlexibilityColumns(k, std::max<std::int64_t>(64 << 20, 12 * k.factor_nonzeros())));
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
-    StageContext ctx{model, result.points, k, stage, {}, {}, 0.0, &result.timings};
+    StageContext ctx{model, result.points, k, lower, stage, {}, {}, 0.0, &result.timings};
     {
       ScopedTimer t(result.timings, "stage loads");
       ctx.x_ref = k.solve(assemble_loads(model, stage.loads));

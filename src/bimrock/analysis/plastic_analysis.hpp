@@ -23,6 +23,11 @@ struct PlasticOptions {
   /// Solve each LCP by the primal-dual active-set method first, Lemke only where it fails
   /// (false: Lemke always; the answers agree, only the time differs).
   bool active_set = true;
+  /// The active-set method solves the equations of each active set on the sparse reduced
+  /// tangent (one factorization of K's size per iteration) instead of the dense active block
+  /// when the increment's LCP is symmetric and at least this many rows are expected active (the
+  /// last increment's and the open joints'); below it the dense block is cheaper. -1: never.
+  int reduced_tangent_rows = 300;
   /// Record each phase's peak resident memory in the timings (benchmarks).
   bool track_memory = false;
 };
@@ -43,7 +48,8 @@ struct IncrementRecord {
   int open_points = 0;         ///< interface points open after the increment
   int lcp_size = 0;
   int pivots = 0;                 ///< Lemke pivots (where the active-set method did not converge)
-  int active_set_iterations = 0;  ///< dense solves of the active-set method
+  int active_set_iterations = 0;  ///< solves of the active-set method (dense or tangent)
+  int tangent_factorizations = 0;  ///< of them, on the sparse reduced tangent
   int rounds = 0;                 ///< LCP solves (candidate rounds) of the increment
   double seconds = 0.0;
 };

@@ -24,15 +24,17 @@ void write_history_csv(const Model& model, const PlasticResult& result,
   out << "stage,stage_name,increment,stage_factor,point_load_N";
   for (const Monitor& m : model.monitors)
     out << ",ux_" << m.name << "_m,uy_" << m.name << "_m";
-  out << ",yielding_points,open_points,lcp_size,active_set_iterations,pivots,rounds,seconds\n";
+  out << ",yielding_points,open_points,lcp_size,active_set_iterations,tangent_factorizations,"
+         "pivots,rounds,seconds\n";
   for (const IncrementRecord& r : result.history) {
     const Stage& stage = model.stages[r.stage];
     out << fmt::format("{},{},{},{},{}", r.stage, stage.name, r.increment, r.stage_factor,
                        r.stage_factor * point_load_resultant(stage));
     for (const Vec2& u : r.monitors)
       out << fmt::format(",{},{}", u.x(), u.y());
-    out << fmt::format(",{},{},{},{},{},{},{}\n", r.yielding_points, r.open_points, r.lcp_size,
-                       r.active_set_iterations, r.pivots, r.rounds, r.seconds);
+    out << fmt::format(",{},{},{},{},{},{},{},{}\n", r.yielding_points, r.open_points,
+                       r.lcp_size, r.active_set_iterations, r.tangent_factorizations, r.pivots,
+                       r.rounds, r.seconds);
   }
 }
 

@@ -63,9 +63,6 @@ double ratio(double a, double b) {
 
 }  // namespace
 
-namespace {
-
-// Residuals of z given w = M z + q and the size of the terms of each w_i, s = |M| |z| + |q|.
 LcpResiduals measure(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const Eigen::VectorXd& s) {
   const double z_scale = z.size() == 0 ? 0.0 : z.cwiseAbs().maxCoeff();
   LcpResiduals r;
@@ -80,8 +77,6 @@ LcpResiduals measure(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const E
   }
   return r;
 }
-
-}  // namespace
 
 LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z) {
   return measure(z, problem.m * z + problem.q,

@@ -48,6 +48,10 @@ struct LcpResiduals {
 
 /// Residuals of z for the problem (w = M z + q computed here).
 [[nodiscard]] LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z);
+/// Residuals of z given w = M z + q and the size of the terms that sum to each w_i
+/// (s = |M| |z| + |q|, or a bound of it), for an M that is not formed.
+[[nodiscard]] LcpResiduals measure(const Eigen::VectorXd& z, const Eigen::VectorXd& w,
+                                   const Eigen::VectorXd& s);
 
 struct LcpResult {
   LcpStatus status = LcpStatus::numerical_failure;

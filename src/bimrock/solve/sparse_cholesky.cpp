@@ -115,6 +115,7 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
   if (!impl_->factor)
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   n_ = lower.rows();
+  analyzed_nonzeros_ = lower.nonZeros();
   factorized_ = false;
 }
 

@@ -30,6 +30,9 @@ class SparseCholesky {
   bool factorize(const CholmodMatrix& lower);
 
   [[nodiscard]] bool factorized() const { return factorized_; }
+  /// Non-zeros of the (lower) matrix whose pattern was analyzed (0 before analyze): a matrix
+  /// with another pattern must be analyzed anew before it is factorized.
+  [[nodiscard]] std::int64_t analyzed_nonzeros() const { return analyzed_nonzeros_; }
   [[nodiscard]] std::int64_t failed_column() const { return failed_column_; }
   [[nodiscard]] std::int64_t rows() const { return n_; }
   /// Non-zeros of the factor L (a measure of its memory: 8 bytes each plus indices).
@@ -43,6 +46,7 @@ class SparseCholesky {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::int64_t n_ = 0;
+  std::int64_t analyzed_nonzeros_ = 0;
   std::int64_t failed_column_ = -1;
   bool factorized_ = false;
 };

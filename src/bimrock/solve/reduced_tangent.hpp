@@ -1,0 +1,70 @@
+#pragma once
+/// @file The active-set equations of the increment LCP w = q + (N - C K^-1 Phi) z solved on the
+/// sparse reduced tangent instead of the dense active block (issue 5, route b). With the rows A
+/// active (w_A = 0, z = 0 elsewhere) and x = K^-1 Phi_A z_A the plastic displacements:
+///
+///   (K - Phi_A N_AA^-1 C_A) x = -Phi_A N_AA^-1 q_A,   z_A = N_AA^-1 (C_A x - q_A),
+///   w = q + N z - C x.
+///
+/// N is block diagonal by yield point, so N_AA^-1 is local and the reduced tangent has the
+/// pattern of K (a yield point couples only the blocks its interface joins): one symbolic
+/// analysis serves every active set, and each costs one numeric factorization of K's size,
+/// whatever |A| is. The dense route costs |A|^3 / 3 and a back-solve per new active row: this one
+/// wins when many rows are active. Cholesky needs the tangent symmetric (associated flow, C =
+/// Phi^T and N symmetric) and positive definite: it is not at a mechanism, and then the
+/// equations report themselves singular (the caller goes back to the dense route, which proves
+/// a collapse). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
+/// independently of the tangent.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/sparse_cholesky.hpp>
+
+namespace bimrock {
+
+/// The sparse parts of the increment LCP (eqs. 24, 28), all in the unknowns of K and the LCP's
+/// rows. The rows of a group (the modes of one yield point) are consecutive.
+struct SplitLcp {
+  const CholmodMatrix* k_lower = nullptr;  ///< n x n, lower triangle of K
+  const CholmodMatrix* c = nullptr;        ///< m x n
+  const CholmodMatrix* phi = nullptr;      ///< n x m
+  const CholmodMatrix* n = nullptr;        ///< m x m, block diagonal by group
+  Eigen::VectorXd q;                       ///< m
+  std::vector<Eigen::Index> group;         ///< per row: its group
+  std::vector<int> group_rank;             ///< per row: independent rows of its group at most
+};
+
+class ReducedTangentEquations final : public ActiveSetEquations {
+ public:
+  /// @param k the factor of K (to measure results)
+  /// @param tangent a factor object that keeps its symbolic analysis from one call to the next
+  ///        (analyzed here when its pattern is not the tangent's)
+  ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k, SparseCholesky& tangent);
+
+  [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }
+  [[nodiscard]] const Eigen::VectorXd& q() const override { return lcp_.q; }
+  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override {
+    return lcp_.group[static_cast<std::size_t>(row)];
+  }
+  [[nodiscard]] int group_rank(Eigen::Index row) const override {
+    return lcp_.group_rank[static_cast<std::size_t>(row)];
+  }
+  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active) override;
+  [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
+
+  /// Numeric factorizations of the tangent so far, and their seconds.
+  [[nodiscard]] int factorizations() const { return factorizations_; }
+  [[nodiscard]] double factorization_seconds() const { return factorization_seconds_; }
+
+ private:
+  const SplitLcp& lcp_;
+  const SparseCholesky& k_;
+  SparseCholesky& tangent_;
+  CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
+  int factorizations_ = 0;
+  double factorization_seconds_ = 0.0;
+};
+
+}  // namespace bimrock
