@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -12,6 +14,10 @@
 
 namespace bimrock {
 namespace {
+
+/// Relative size of a z_i or w_i of the wrong sign that is round-off (the accuracy asked of a
+/// solution is 1e-9).
+constexpr double kRoundOff = 1e-10;
 
 // Keeps at most group_rank rows of each group active, those of highest priority: more would
 // make the active block singular (three modes of a joint point in its two-dimensional stress
@@ -114,6 +120,7 @@ class ColumnEquations final : public ActiveSetEquations {
         out.z(rows_[static_cast<std::size_t>(r)]) = za(r);
     }
     out.w = m_rows_ * za + q();
+    out.w_scale = m_rows_.cwiseAbs() * za.cwiseAbs() + q().cwiseAbs();
     out.regular = true;
     return out;
   }
@@ -239,6 +246,24 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     }
     z = std::move(step.z);
     const Eigen::VectorXd& w = step.w;
+    {
+      // Rows that the rule would change only for round-off (z_i or w_i ~ 0, a degenerate
+      // solution) can flip back and forth without a cycle the set check sees: an iterate that
+      // is a solution to round-off is one, whatever the rule says.
+      const double z_top = z.cwiseAbs().maxCoeff();
+      bool round_off_only = true;
+      for (Eigen::Index i = 0; i < n && round_off_only; ++i)
+        round_off_only = active[static_cast<std::size_t>(i)]
+                             ? z(i) >= -kRoundOff * z_top
+                             : w(i) >= -kRoundOff * step.w_scale(i);
+      if (round_off_only) {
+        const Eigen::VectorXd iterate = z;
+        LcpResult r = solved_or(LcpStatus::numerical_failure, iteration);
+        if (r.status == LcpStatus::solved)
+          return r;
+        z = iterate;
+      }
+    }
     std::vector<char> next(static_cast<std::size_t>(n));
     for (Eigen::Index i = 0; i < n; ++i)
       next[static_cast<std::size_t>(i)] = z(i) > w(i);
@@ -246,6 +271,15 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     bool changed = false;
     for (Eigen::Index i = 0; i < n; ++i)
       changed = changed || next[static_cast<std::size_t>(i)] != active[static_cast<std::size_t>(i)];
+    if (std::getenv("BIMROCK_DEBUG_ACTIVE_SET")) {
+      int added = 0, dropped = 0;
+      for (Eigen::Index i = 0; i < n; ++i) {
+        added += next[static_cast<std::size_t>(i)] && !active[static_cast<std::size_t>(i)];
+        dropped += !next[static_cast<std::size_t>(i)] && active[static_cast<std::size_t>(i)];
+      }
+      std::fprintf(stderr, "    it %d |A| %zu +%d -%d min z %g min w %g\n", iteration, rows.size(), added,
+                   dropped, z.minCoeff(), w.minCoeff());
+    }
     last_active = active;
     last_w = w;
     if (single && changed)

@@ -1,6 +1,7 @@
 #include <bimrock/solve/reduced_tangent.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <utility>
 
 #include <Eigen/LU>
@@ -12,7 +13,81 @@ namespace {
 /// A local block N_gg whose reciprocal condition is below this is singular (e.g. both slip
 /// modes of a frictionless joint point): left to the dense route.
 constexpr double kSingularLocal = 1e-12;
+/// Shifts, relative to diag(K), under which a tangent that is singular at a mechanism is
+/// positive definite (the smallest that works: the kernel's accuracy is about the shift times
+/// the condition of K, and the certificate needs ~1e-8), and the inverse iterations that find
+/// its kernel.
+constexpr double kKernelShifts[] = {1e-12, 1e-10};
+constexpr int kInverseIterations = 6;
 }  // namespace
+
+struct ReducedTangentEquations::Local {
+  std::size_t first;        // its first row's place in `active`
+  Eigen::MatrixXd inverse;  // N_gg^-1 of its active rows
+};
+
+// C_R v - v_R on the rows of one local block.
+Eigen::VectorXd ReducedTangentEquations::strain(const std::vector<Eigen::Index>& active,
+                                                const Local& l, const Eigen::VectorXd& x) const {
+  Eigen::VectorXd out(l.inverse.rows());
+  for (Eigen::Index i = 0; i < out.size(); ++i) {
+    double cx = 0.0;
+    for (CholmodMatrix::InnerIterator c(c_transposed_, active[l.first + static_cast<std::size_t>(i)]);
+         c; ++c)
+      cx += c.value() * x(c.row());
+    out(i) = cx;
+  }
+  return out;
+}
+
+Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
+                                                   const std::vector<Eigen::Index>& active,
+                                                   const std::vector<Local>& locals) {
+  // A tangent that is not positive definite because the active rows form a mechanism is
+  // singular: S v = 0 for the mechanism's displacements v, and with them plastic multipliers
+  // r_A = N_AA^-1 C_A v that satisfy M_AA r_A = 0 (the dense route's kernel vector). Found by
+  // inverse iteration on S + sigma diag(K), which is positive definite if S is only singular.
+  const Eigen::Index n = tangent.rows();
+  const Eigen::VectorXd d = lcp_.k_lower->diagonal();
+  bool factorized = false;
+  for (double shift : kKernelShifts) {
+    CholmodMatrix shifted = tangent;
+    for (Eigen::Index j = 0; j < n; ++j)
+      shifted.coeffRef(j, j) += shift * d(j);
+    ++factorizations_;
+    factorized = tangent_.factorize(shifted);
+    if (factorized)
+      break;
+  }
+  if (!factorized)
+    return {};  // indefinite beyond round-off: not a mechanism of these rows alone
+  Eigen::VectorXd v(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    v(i) = 1.0 + 0.5 * std::sin(static_cast<double>(i));  // any start not orthogonal to it
+  for (int it = 0; it < kInverseIterations; ++it) {
+    v = tangent_.solve(Eigen::VectorXd(d.asDiagonal() * v));
+    v /= v.norm();
+  }
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(size());
+  for (const Local& l : locals) {
+    const Eigen::VectorXd r_local = l.inverse * strain(active, l, v);
+    for (Eigen::Index i = 0; i < r_local.size(); ++i)
+      r(active[l.first + static_cast<std::size_t>(i)]) = r_local(i);
+  }
+  if (r.sum() < 0.0)
+    r = -r;
+  if (!(r.maxCoeff() > 0.0))
+    return {};
+  r = r.cwiseMax(0.0) / r.maxCoeff();  // certifies_infeasibility tolerates -1e-8 only
+  // The certificate is checked on the LCP itself, with K: M r = N r - C K^-1 Phi r.
+  const Eigen::VectorXd x = k_.solve(Eigen::VectorXd(*lcp_.phi * r));
+  const Eigen::VectorXd mr = *lcp_.n * r - *lcp_.c * x;
+  const Eigen::VectorXd sizes = lcp_.n->cwiseAbs() * r + lcp_.c->cwiseAbs() * x.cwiseAbs();
+  const double m_max = lcp_.n->diagonal().cwiseAbs().maxCoeff();  // M_ii <= N_ii
+  if (!certifies_infeasibility(q(), r, mr, sizes, m_max))
+    return {};
+  return r;
+}
 
 ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k,
                                                  SparseCholesky& tangent)
@@ -26,18 +101,14 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
   out.z = Eigen::VectorXd::Zero(m);
   if (active.empty()) {  // then x = 0: no factorization
     out.w = q();
+    out.w_scale = q().cwiseAbs();
     out.regular = true;
     return out;
   }
-  // N_AA^-1 group by group (the active rows of a group are consecutive in `active`), the lower
-  // triangle of Phi_A N_AA^-1 C_A, and the right-hand side -Phi_A N_AA^-1 q_A.
-  struct Local {
-    std::size_t first;
-    Eigen::MatrixXd inverse;
-  };
+  // N_AA^-1 group by group (the active rows of a group are consecutive in `active`) and the
+  // lower triangle of Phi_A N_AA^-1 C_A.
   std::vector<Local> locals;
   std::vector<Eigen::Triplet<double, std::int64_t>> plastic;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
   for (std::size_t a = 0; a < active.size();) {
     std::size_t b = a;
     while (b < active.size() && group(active[b]) == group(active[a]))
@@ -52,14 +123,8 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
     if (!(lu.rcond() > kSingularLocal))
       return out;
     Local l{a, lu.inverse()};
-    Eigen::VectorXd q_local(r);
-    for (Eigen::Index i = 0; i < r; ++i)
-      q_local(i) = q()(active[a + static_cast<std::size_t>(i)]);
-    const Eigen::VectorXd t = l.inverse * q_local;
     for (Eigen::Index i = 0; i < r; ++i) {
       const Eigen::Index row_i = active[a + static_cast<std::size_t>(i)];
-      for (CholmodMatrix::InnerIterator p(*lcp_.phi, row_i); p; ++p)
-        rhs(p.row()) -= p.value() * t(i);
       for (Eigen::Index j = 0; j < r; ++j) {
         const double coefficient = l.inverse(i, j);
         if (coefficient == 0.0)
@@ -88,26 +153,44 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
   factorization_seconds_ +=
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ++factorizations_;
-  if (!positive_definite)
+  if (!positive_definite) {
+    out.ray = mechanism(tangent, active, locals);
     return out;
-  Eigen::VectorXd x = tangent_.solve(rhs);
-  x += tangent_.solve(Eigen::VectorXd(rhs - tangent.selfadjointView<Eigen::Lower>() * x));
-
-  for (const Local& l : locals) {
-    const auto r = l.inverse.rows();
-    Eigen::VectorXd strain_minus_q(r);  // C_R x - q_R
-    for (Eigen::Index i = 0; i < r; ++i) {
-      const Eigen::Index row = active[l.first + static_cast<std::size_t>(i)];
-      double cx = 0.0;
-      for (CholmodMatrix::InnerIterator c(c_transposed_, row); c; ++c)
-        cx += c.value() * x(c.row());
-      strain_minus_q(i) = cx - q()(row);
-    }
-    const Eigen::VectorXd z_local = l.inverse * strain_minus_q;
-    for (Eigen::Index i = 0; i < r; ++i)
-      out.z(active[l.first + static_cast<std::size_t>(i)]) = z_local(i);
   }
+  // z_A with M_AA z_A = -v_A, through the tangent: S x = -Phi_A N_AA^-1 v_A, then
+  // z_A = N_AA^-1 (C_A x - v_A). Added to out.z.
+  auto add_solution = [&](const Eigen::VectorXd& v) {
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
+    std::vector<Eigen::VectorXd> t(locals.size());
+    for (std::size_t g = 0; g < locals.size(); ++g) {
+      const Local& l = locals[g];
+      Eigen::VectorXd v_local(l.inverse.rows());
+      for (Eigen::Index i = 0; i < v_local.size(); ++i)
+        v_local(i) = v(active[l.first + static_cast<std::size_t>(i)]);
+      const Eigen::VectorXd nv = l.inverse * v_local;
+      for (Eigen::Index i = 0; i < v_local.size(); ++i)
+        for (CholmodMatrix::InnerIterator p(*lcp_.phi, active[l.first + static_cast<std::size_t>(i)]);
+             p; ++p)
+          rhs(p.row()) -= p.value() * nv(i);
+      t[g] = std::move(v_local);
+    }
+    const Eigen::VectorXd x = tangent_.solve(rhs);
+    for (std::size_t g = 0; g < locals.size(); ++g) {
+      const Local& l = locals[g];
+      const Eigen::VectorXd z_local = l.inverse * (strain(active, l, x) - t[g]);
+      for (Eigen::Index i = 0; i < z_local.size(); ++i)
+        out.z(active[l.first + static_cast<std::size_t>(i)]) += z_local(i);
+    }
+  };
+  // Near a mechanism the tangent is ill-conditioned (K and the plastic part nearly cancel):
+  // one step of refinement on the LCP's own equations, its residual w_A measured with K.
+  add_solution(q());
+  Eigen::VectorXd x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
+  add_solution(Eigen::VectorXd(q() + *lcp_.n * out.z - *lcp_.c * x));
+  x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
   out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
+  out.w_scale = q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() +
+                lcp_.c->cwiseAbs() * x.cwiseAbs();
   out.regular = true;
   return out;
 }

@@ -12,8 +12,9 @@
 /// whatever |A| is. The dense route costs |A|^3 / 3 and a back-solve per new active row: this one
 /// wins when many rows are active. Cholesky needs the tangent symmetric (associated flow, C =
 /// Phi^T and N symmetric) and positive definite: it is not at a mechanism, and then the
-/// equations report themselves singular (the caller goes back to the dense route, which proves
-/// a collapse). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
+/// equations report themselves singular, with the mechanism's multipliers as a Farkas
+/// certificate when the tangent's kernel gives one (else the caller goes back to the dense
+/// route). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
 /// independently of the tangent.
 #include <vector>
 
@@ -59,6 +60,13 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   [[nodiscard]] double factorization_seconds() const { return factorization_seconds_; }
 
  private:
+  struct Local;
+  [[nodiscard]] Eigen::VectorXd strain(const std::vector<Eigen::Index>& active, const Local& l,
+                                       const Eigen::VectorXd& x) const;
+  [[nodiscard]] Eigen::VectorXd mechanism(const CholmodMatrix& tangent,
+                                          const std::vector<Eigen::Index>& active,
+                                          const std::vector<Local>& locals);
+
   const SplitLcp& lcp_;
   const SparseCholesky& k_;
   SparseCholesky& tangent_;
