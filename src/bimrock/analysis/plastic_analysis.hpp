@@ -47,10 +47,10 @@ struct IncrementRecord {
   int yielding_points = 0;     ///< points with plastic flow in this increment
   int open_points = 0;         ///< interface points open after the increment
   int lcp_size = 0;
-  int pivots = 0;                 ///< Lemke pivots (where the active-set method did not converge)
-  int active_set_iterations = 0;  ///< solves of the active-set method (dense or tangent)
+  int pivots = 0;                  ///< Lemke pivots (where the active-set method did not converge)
+  int active_set_iterations = 0;   ///< solves of the active-set method (dense or tangent)
   int tangent_factorizations = 0;  ///< of them, on the sparse reduced tangent
-  int rounds = 0;                 ///< LCP solves (candidate rounds) of the increment
+  int rounds = 0;                  ///< LCP solves (candidate rounds) of the increment
   double seconds = 0.0;
 };
 

@@ -3,8 +3,8 @@
 namespace bimrock {
 
 YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
-                                  const std::vector<PlasticState>& states,
-                                  const Eigen::VectorXd& u, const std::vector<int>& candidates) {
+                                  const std::vector<PlasticState>& states, const Eigen::VectorXd& u,
+                                  const std::vector<int>& candidates) {
   YieldSystem sys;
   std::vector<Eigen::Triplet<double, std::int64_t>> phi;
   std::vector<Eigen::Triplet<double, std::int64_t>> c;
@@ -17,7 +17,7 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
     const Eigen::VectorXd stress = local_stress(model, point, states[p], u);
     const LocalYield y = linearize(model, point, states[p], stress);
     const double w = point.weight;
-    const Eigen::MatrixXd a_d_e = w * y.a * d * op.e;       // scaled C rows, local columns
+    const Eigen::MatrixXd a_d_e = w * y.a * d * op.e;  // scaled C rows, local columns
     const Eigen::MatrixXd e_d_g = w * op.e.transpose() * d * y.g.transpose();  // Phi columns
     const int first = sys.size();
     for (int mode = 0; mode < y.a.rows(); ++mode) {
@@ -30,8 +30,10 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
       for (int k = 0; k < op.n_blocks(); ++k) {
         for (int dof = 0; dof < 6; ++dof) {
           const std::int64_t global = 6 * op.blocks[k] + dof;
-          if (a_d_e(mode, 6 * k + dof) != 0.0) c.emplace_back(row, global, a_d_e(mode, 6 * k + dof));
-          if (e_d_g(6 * k + dof, mode) != 0.0) phi.emplace_back(global, row, e_d_g(6 * k + dof, mode));
+          if (a_d_e(mode, 6 * k + dof) != 0.0)
+            c.emplace_back(row, global, a_d_e(mode, 6 * k + dof));
+          if (e_d_g(6 * k + dof, mode) != 0.0)
+            phi.emplace_back(global, row, e_d_g(6 * k + dof, mode));
         }
       }
     }

@@ -20,11 +20,11 @@ struct YieldRow {
 
 struct YieldSystem {
   std::vector<YieldRow> rows;
-  SparseMatrix phi;      ///< n_dofs x m: plastic loads of unit multipliers
-  SparseMatrix c;        ///< m x n_dofs: rate of each (scaled) yield function with dU
-  SparseMatrix n;        ///< m x m: local plastic coupling and hardening (block diagonal: the
-                         ///< modes of one point are consecutive rows)
-  Eigen::VectorXd f0;    ///< m: (scaled) yield function values at the current state
+  SparseMatrix phi;    ///< n_dofs x m: plastic loads of unit multipliers
+  SparseMatrix c;      ///< m x n_dofs: rate of each (scaled) yield function with dU
+  SparseMatrix n;      ///< m x m: local plastic coupling and hardening (block diagonal: the
+                       ///< modes of one point are consecutive rows)
+  Eigen::VectorXd f0;  ///< m: (scaled) yield function values at the current state
   std::vector<Eigen::Vector3d> flow;  ///< per row: the flow direction g (first 2 for joints)
   [[nodiscard]] int size() const { return static_cast<int>(rows.size()); }
 };
@@ -32,7 +32,7 @@ struct YieldSystem {
 /// Builds the yield rows of every mode of the given yield points at their current state.
 /// @param candidates indices into `points`
 YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
-                                  const std::vector<PlasticState>& states,
-                                  const Eigen::VectorXd& u, const std::vector<int>& candidates);
+                                  const std::vector<PlasticState>& states, const Eigen::VectorXd& u,
+                                  const std::vector<int>& candidates);
 
 }  // namespace bimrock

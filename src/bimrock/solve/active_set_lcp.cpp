@@ -86,9 +86,7 @@ class ColumnEquations final : public ActiveSetEquations {
   [[nodiscard]] Eigen::Index size() const override { return problem_.size(); }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return problem_.q(); }
   [[nodiscard]] Eigen::Index group(Eigen::Index row) const override { return problem_.group(row); }
-  [[nodiscard]] int group_rank(Eigen::Index row) const override {
-    return problem_.group_rank(row);
-  }
+  [[nodiscard]] int group_rank(Eigen::Index row) const override { return problem_.group_rank(row); }
 
   Solution solve(const std::vector<Eigen::Index>& active) override {
     const Eigen::Index n = size();
@@ -97,7 +95,8 @@ class ColumnEquations final : public ActiveSetEquations {
     const auto k = static_cast<Eigen::Index>(rows_.size());
     m_rows_.resize(n, k);
     for (Eigen::Index c = 0; c < k; ++c)
-      m_rows_.col(c) = known_.col(slot_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(c)])]);
+      m_rows_.col(c) =
+          known_.col(slot_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(c)])]);
     Eigen::MatrixXd a(k, k);
     Eigen::VectorXd rhs(k);
     for (Eigen::Index r = 0; r < k; ++r) {
@@ -253,9 +252,8 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       const double z_top = z.cwiseAbs().maxCoeff();
       bool round_off_only = true;
       for (Eigen::Index i = 0; i < n && round_off_only; ++i)
-        round_off_only = active[static_cast<std::size_t>(i)]
-                             ? z(i) >= -kRoundOff * z_top
-                             : w(i) >= -kRoundOff * step.w_scale(i);
+        round_off_only = active[static_cast<std::size_t>(i)] ? z(i) >= -kRoundOff * z_top
+                                                             : w(i) >= -kRoundOff * step.w_scale(i);
       if (round_off_only) {
         const Eigen::VectorXd iterate = z;
         LcpResult r = solved_or(LcpStatus::numerical_failure, iteration);
@@ -277,8 +275,8 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
         added += next[static_cast<std::size_t>(i)] && !active[static_cast<std::size_t>(i)];
         dropped += !next[static_cast<std::size_t>(i)] && active[static_cast<std::size_t>(i)];
       }
-      std::fprintf(stderr, "    it %d |A| %zu +%d -%d min z %g min w %g\n", iteration, rows.size(), added,
-                   dropped, z.minCoeff(), w.minCoeff());
+      std::fprintf(stderr, "    it %d |A| %zu +%d -%d min z %g min w %g\n", iteration, rows.size(),
+                   added, dropped, z.minCoeff(), w.minCoeff());
     }
     last_active = active;
     last_w = w;

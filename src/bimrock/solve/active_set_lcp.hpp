@@ -49,11 +49,11 @@ class ActiveSetEquations {
   [[nodiscard]] virtual Eigen::Index group(Eigen::Index row) const { return row; }
   [[nodiscard]] virtual int group_rank(Eigen::Index /*row*/) const { return 1; }
   struct Solution {
-    bool regular = false;  ///< false: M_AA is singular (or could not be factorized)
-    Eigen::VectorXd z;     ///< zero off the active rows, M_AA z_A = -q_A on them
-    Eigen::VectorXd w;     ///< M z + q
+    bool regular = false;     ///< false: M_AA is singular (or could not be factorized)
+    Eigen::VectorXd z;        ///< zero off the active rows, M_AA z_A = -q_A on them
+    Eigen::VectorXd w;        ///< M z + q
     Eigen::VectorXd w_scale;  ///< the size of the terms that sum to each w_i (|M| |z| + |q|)
-    Eigen::VectorXd ray;   ///< if singular: a Farkas certificate of no solution, if one was found
+    Eigen::VectorXd ray;  ///< if singular: a Farkas certificate of no solution, if one was found
   };
   /// The solution of the equations of the active rows `active` (sorted).
   [[nodiscard]] virtual Solution solve(const std::vector<Eigen::Index>& active) = 0;

@@ -32,7 +32,8 @@ Eigen::VectorXd ReducedTangentEquations::strain(const std::vector<Eigen::Index>&
   Eigen::VectorXd out(l.inverse.rows());
   for (Eigen::Index i = 0; i < out.size(); ++i) {
     double cx = 0.0;
-    for (CholmodMatrix::InnerIterator c(c_transposed_, active[l.first + static_cast<std::size_t>(i)]);
+    for (CholmodMatrix::InnerIterator c(c_transposed_,
+                                        active[l.first + static_cast<std::size_t>(i)]);
          c; ++c)
       cx += c.value() * x(c.row());
     out(i) = cx;
@@ -169,7 +170,8 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
         v_local(i) = v(active[l.first + static_cast<std::size_t>(i)]);
       const Eigen::VectorXd nv = l.inverse * v_local;
       for (Eigen::Index i = 0; i < v_local.size(); ++i)
-        for (CholmodMatrix::InnerIterator p(*lcp_.phi, active[l.first + static_cast<std::size_t>(i)]);
+        for (CholmodMatrix::InnerIterator p(*lcp_.phi,
+                                            active[l.first + static_cast<std::size_t>(i)]);
              p; ++p)
           rhs(p.row()) -= p.value() * nv(i);
       t[g] = std::move(v_local);
@@ -189,8 +191,8 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
   add_solution(Eigen::VectorXd(q() + *lcp_.n * out.z - *lcp_.c * x));
   x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
   out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
-  out.w_scale = q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() +
-                lcp_.c->cwiseAbs() * x.cwiseAbs();
+  out.w_scale =
+      q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();
   out.regular = true;
   return out;
 }
@@ -198,9 +200,9 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
 LcpResult ReducedTangentEquations::result(LcpStatus status, Eigen::VectorXd z, int steps) {
   LcpResult r;
   r.status = status;
-  const Eigen::VectorXd x =
-      z.size() > 0 && z.cwiseAbs().maxCoeff() > 0.0 ? k_.solve(Eigen::VectorXd(*lcp_.phi * z))
-                                    : Eigen::VectorXd::Zero(lcp_.k_lower->rows());
+  const Eigen::VectorXd x = z.size() > 0 && z.cwiseAbs().maxCoeff() > 0.0
+                                ? k_.solve(Eigen::VectorXd(*lcp_.phi * z))
+                                : Eigen::VectorXd::Zero(lcp_.k_lower->rows());
   r.w = q() + *lcp_.n * z - *lcp_.c * x;
   const Eigen::VectorXd sizes =
       q().cwiseAbs() + lcp_.n->cwiseAbs() * z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();

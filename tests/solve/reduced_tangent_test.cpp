@@ -1,0 +1,130 @@
+// The active-set equations on the sparse reduced tangent. Expected numbers come from a second
+// method on the same LCP: the dense matrix M = N - C K^-1 Phi formed with a dense LDLT of K,
+// solved by a dense LU (one active set) or by Lemke (the whole LCP; M is positive definite, so
+// the solution is unique).
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <bimrock/solve/lemke.hpp>
+#include <bimrock/solve/reduced_tangent.hpp>
+
+#include "solve/random_lcp.hpp"
+
+namespace bimrock {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+// A chain of blocks (6 unknowns each) joined by yield points as the analysis builds them: point
+// p between blocks p - 1 and p (block 0 to the ground) has a local strain E (2 x 12), springs
+// D, and two yield modes with gradients a (associated flow): C = a D E, Phi = C^T, N = a D a^T.
+// K = sum E^T D E plus a stiffness of each block's own: larger than the springs, so M is
+// positive definite.
+struct ChainLcp {
+  CholmodMatrix k_lower, c, phi, n;
+  SplitLcp split;
+  MatrixXd m_dense;
+  SparseCholesky k;
+};
+
+void make_chain(int blocks, unsigned seed, ChainLcp& out) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> stiffness(1.0, 3.0);
+  const int dofs = 6 * blocks;
+  const int rows = 2 * blocks;
+  MatrixXd k = MatrixXd::Zero(dofs, dofs);
+  MatrixXd c = MatrixXd::Zero(rows, dofs);
+  MatrixXd n = MatrixXd::Zero(rows, rows);
+  for (int b = 0; b < blocks; ++b)
+    k.block(6 * b, 6 * b, 6, 6) += testing::random_spd(6, rng);
+  for (int p = 0; p < blocks; ++p) {
+    const int first = p == 0 ? 0 : 6 * (p - 1);
+    const int width = p == 0 ? 6 : 12;
+    const MatrixXd e = testing::random_matrix(2, width, rng);
+    const Eigen::Vector2d d(stiffness(rng), stiffness(rng));
+    const MatrixXd a = testing::random_matrix(2, 2, rng) + 2.0 * MatrixXd::Identity(2, 2);
+    k.block(first, first, width, width) += e.transpose() * d.asDiagonal() * e;
+    c.block(2 * p, first, 2, width) = a * d.asDiagonal() * e;
+    n.block(2 * p, 2 * p, 2, 2) = a * d.asDiagonal() * a.transpose();
+  }
+  out.k_lower = k.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
+  out.c = c.sparseView();
+  out.phi = c.transpose().sparseView();
+  out.n = n.sparseView();
+  out.m_dense = n - c * k.ldlt().solve(c.transpose());
+  out.split =
+      SplitLcp{&out.k_lower, &out.c, &out.phi, &out.n, testing::random_vector(rows, rng), {}, {}};
+  for (int r = 0; r < rows; ++r) {
+    out.split.group.push_back(r / 2);
+    out.split.group_rank.push_back(2);
+  }
+  out.k.analyze(out.k_lower, 6);
+  ASSERT_TRUE(out.k.factorize(out.k_lower));
+}
+
+TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
+  ChainLcp chain;
+  make_chain(40, 7, chain);
+  SparseCholesky tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent);
+  std::vector<Eigen::Index> active;
+  for (Eigen::Index r = 0; r < equations.size(); r += 3)  // one or both modes of a point
+    active.push_back(r);
+  const ActiveSetEquations::Solution s = equations.solve(active);
+  ASSERT_TRUE(s.regular);
+  // Dense LU of M_AA z_A = -q_A.
+  const auto k = static_cast<Eigen::Index>(active.size());
+  MatrixXd a(k, k);
+  VectorXd rhs(k);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    rhs(i) = -chain.split.q(active[i]);
+    for (Eigen::Index j = 0; j < k; ++j)
+      a(i, j) = chain.m_dense(active[i], active[j]);
+  }
+  const VectorXd za = a.partialPivLu().solve(rhs);
+  VectorXd z = VectorXd::Zero(equations.size());
+  for (Eigen::Index i = 0; i < k; ++i)
+    z(active[i]) = za(i);
+  const VectorXd w = chain.m_dense * z + chain.split.q;
+  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
+  EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+  EXPECT_EQ(equations.factorizations(), 1);
+}
+
+TEST(ReducedTangent, ActiveSetOnTheTangentAgreesWithLemkeOnTheDenseMatrix) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    ChainLcp chain;
+    make_chain(60, seed, chain);
+    const LcpResult lemke = Lemke().solve({chain.m_dense, chain.split.q});
+    ASSERT_EQ(lemke.status, LcpStatus::solved);
+    SparseCholesky tangent;
+    ReducedTangentEquations equations(chain.split, chain.k, tangent);
+    const LcpResult r = ActiveSetLcp().solve(equations);
+    ASSERT_EQ(r.status, LcpStatus::solved) << to_string(r.status) << " seed " << seed;
+    EXPECT_LE((r.z - lemke.z).cwiseAbs().maxCoeff(), 1e-9 * lemke.z.cwiseAbs().maxCoeff());
+    EXPECT_LE(r.residuals.worst_relative(), 1e-9);
+    EXPECT_GT(equations.factorizations(), 0);
+  }
+}
+
+TEST(ReducedTangent, ASingularLocalBlockIsLeftToTheDenseRoute) {
+  ChainLcp chain;
+  make_chain(5, 11, chain);
+  // Both modes of point 2 with proportional gradients: N_gg singular.
+  MatrixXd n = MatrixXd(chain.n);
+  n.block(4, 4, 2, 2) = MatrixXd::Ones(2, 2);
+  chain.n = n.sparseView();
+  SparseCholesky tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent);
+  const ActiveSetEquations::Solution s = equations.solve({4, 5});
+  EXPECT_FALSE(s.regular);
+  EXPECT_EQ(s.ray.size(), 0);
+}
+
+}  // namespace
+}  // namespace bimrock
