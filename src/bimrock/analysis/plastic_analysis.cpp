@@ -277,11 +277,14 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
               solvers.columns.seconds() - solved_before);
     if (m > 0) {
       // solve_lcp: the active-set method first (warm-started from the rows that yielded in the
-      // last increment and the open joints; only the columns of active rows are formed); Lemke
-      // on the whole matrix where it does not converge, and it alone decides a collapse.
+      // last increment and the open joints), on the sparse reduced tangent when many rows are
+      // active, else on the dense active block (only the columns of active rows are formed);
+      // where it does not converge, Lemke on a working set, then on the whole matrix. A
+      // collapse is a Lemke ray or a Farkas certificate (docs/formulation.md).
       const double columns_before = solvers.columns.seconds();
       LcpResult r;
       const Eigen::VectorXd* warm_start = warm.maxCoeff() > 0.0 ? &warm : nullptr;
+      bool dense_allowed = true;
       if (opt.active_set && opt.reduced_tangent_rows >= 0 &&
           warm.sum() >= opt.reduced_tangent_rows && lcp.symmetric()) {
         // Many rows active: the equations of each active set on the sparse reduced tangent.
@@ -297,8 +300,13 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         if (std::getenv("BIMROCK_DEBUG_LCP") && r.status != LcpStatus::solved)
           std::fprintf(stderr, "reduced tangent m=%d: %s after %d, worst residual %g\n", m,
                        to_string(r.status), r.steps, r.residuals.worst_relative());
+        dense_allowed = m <= opt.dense_fallback_rows;
       }
-      if (opt.active_set && r.status != LcpStatus::solved) {
+      if (!dense_allowed && r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
+        t.status = Trial::Status::failed;  // too large for the dense route: cut the step
+        return t;
+      }
+      if (opt.active_set && r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
         r = solvers.active_set.solve(lcp, warm_start);
         t.active_set_iterations += r.steps;
       }

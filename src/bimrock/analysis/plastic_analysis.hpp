@@ -28,6 +28,11 @@ struct PlasticOptions {
   /// when the increment's LCP is symmetric and at least this many rows are expected active (the
   /// last increment's and the open joints'); below it the dense block is cheaper. -1: never.
   int reduced_tangent_rows = 300;
+  /// Where the tangent route fails (no convergence, a tangent that is neither positive definite
+  /// nor a proven mechanism), the dense active block and Lemke take over on LCPs up to this
+  /// many rows; a larger LCP fails the step, which is then cut (Lemke is O(m^3) and the dense
+  /// block needs a back-solve per active row: hours at 10^4 rows).
+  int dense_fallback_rows = 4000;
   /// Record each phase's peak resident memory in the timings (benchmarks).
   bool track_memory = false;
 };
