@@ -26,7 +26,7 @@ struct ReducedTangentEquations::Local {
   Eigen::MatrixXd inverse;  // N_gg^-1 of its active rows
 };
 
-// C_R v - v_R on the rows of one local block.
+// C_R x on the rows of one local block (the rates of their yield functions).
 Eigen::VectorXd ReducedTangentEquations::strain(const std::vector<Eigen::Index>& active,
                                                 const Local& l, const Eigen::VectorXd& x) const {
   Eigen::VectorXd out(l.inverse.rows());
