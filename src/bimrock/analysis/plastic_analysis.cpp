@@ -284,9 +284,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       const double columns_before = solvers.columns.seconds();
       LcpResult r;
       const Eigen::VectorXd* warm_start = warm.maxCoeff() > 0.0 ? &warm : nullptr;
-      bool dense_allowed = true;
-      if (opt.active_set && opt.reduced_tangent_rows >= 0 &&
-          warm.sum() >= opt.reduced_tangent_rows && lcp.symmetric()) {
+      const bool tangent_route = opt.active_set && opt.reduced_tangent_rows >= 0 &&
+                                 warm.sum() >= opt.reduced_tangent_rows && lcp.symmetric();
+      if (tangent_route) {
         // Many rows active: the equations of each active set on the sparse reduced tangent.
         SplitLcp split{&ctx.k_lower, &sys.c, &sys.phi, &sys.n, lcp.q(), {}, {}};
         for (int i = 0; i < m; ++i) {
@@ -300,9 +300,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         if (std::getenv("BIMROCK_DEBUG_LCP") && r.status != LcpStatus::solved)
           std::fprintf(stderr, "reduced tangent m=%d: %s after %d, worst residual %g\n", m,
                        to_string(r.status), r.steps, r.residuals.worst_relative());
-        dense_allowed = m <= opt.dense_fallback_rows;
       }
-      if (!dense_allowed && r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
+      if (tangent_route && m > opt.dense_fallback_rows && r.status != LcpStatus::solved &&
+          r.status != LcpStatus::no_solution) {
         t.status = Trial::Status::failed;  // too large for the dense route: cut the step
         return t;
       }

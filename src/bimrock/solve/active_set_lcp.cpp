@@ -217,6 +217,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       }
     }
   };
+  const bool trace = std::getenv("BIMROCK_DEBUG_ACTIVE_SET") != nullptr;  // per-iteration lines
   for (int iteration = 1; iteration <= 2 * options_.max_iterations; ++iteration) {
     if (!single && iteration > options_.max_iterations)
       break;
@@ -269,7 +270,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     bool changed = false;
     for (Eigen::Index i = 0; i < n; ++i)
       changed = changed || next[static_cast<std::size_t>(i)] != active[static_cast<std::size_t>(i)];
-    if (std::getenv("BIMROCK_DEBUG_ACTIVE_SET")) {
+    if (trace) {
       int added = 0, dropped = 0;
       for (Eigen::Index i = 0; i < n; ++i) {
         added += next[static_cast<std::size_t>(i)] && !active[static_cast<std::size_t>(i)];

@@ -1,6 +1,5 @@
 #include <bimrock/solve/reduced_tangent.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -149,10 +148,7 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
   if (tangent.nonZeros() != tangent_.analyzed_nonzeros() ||
       tangent.nonZeros() != lcp_.k_lower->nonZeros())
     tangent_.analyze(tangent, 6);
-  const auto start = std::chrono::steady_clock::now();
   const bool positive_definite = tangent_.factorize(tangent);
-  factorization_seconds_ +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   ++factorizations_;
   if (!positive_definite) {
     out.ray = mechanism(tangent, active, locals);

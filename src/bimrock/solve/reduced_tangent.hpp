@@ -55,9 +55,8 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active) override;
   [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
 
-  /// Numeric factorizations of the tangent so far, and their seconds.
+  /// Numeric factorizations of the tangent so far.
   [[nodiscard]] int factorizations() const { return factorizations_; }
-  [[nodiscard]] double factorization_seconds() const { return factorization_seconds_; }
 
  private:
   struct Local;
@@ -72,7 +71,6 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   SparseCholesky& tangent_;
   CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
   int factorizations_ = 0;
-  double factorization_seconds_ = 0.0;
 };
 
 }  // namespace bimrock
