@@ -96,6 +96,42 @@ TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   EXPECT_EQ(equations.factorizations(), 1);
 }
 
+TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {
+  // The proximal equations of projected Newton: (M_AA + D) z_A = -q_A + D center_A with
+  // D = factor N_rr, formed densely and solved by LU.
+  ChainLcp chain;
+  make_chain(40, 5, chain);
+  SparseCholesky tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent);
+  std::vector<Eigen::Index> active;
+  for (Eigen::Index r = 0; r < equations.size(); r += 2)
+    active.push_back(r);
+  const auto k = static_cast<Eigen::Index>(active.size());
+  std::mt19937 rng(3);
+  ActiveSetEquations::Damping damping{VectorXd::Zero(k),
+                                      testing::random_vector(equations.size(), rng)};
+  for (Eigen::Index i = 0; i < k; i += 3)
+    damping.factor(i) = 0.5;
+  const ActiveSetEquations::Solution s = equations.solve(active, damping);
+  ASSERT_TRUE(s.regular);
+  MatrixXd a(k, k);
+  VectorXd rhs(k);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    for (Eigen::Index j = 0; j < k; ++j)
+      a(i, j) = chain.m_dense(active[i], active[j]);
+    const double d = damping.factor(i) * chain.n.coeff(active[i], active[i]);
+    a(i, i) += d;
+    rhs(i) = -chain.split.q(active[i]) + d * damping.center(active[i]);
+  }
+  const VectorXd za = a.partialPivLu().solve(rhs);
+  VectorXd z = VectorXd::Zero(equations.size());
+  for (Eigen::Index i = 0; i < k; ++i)
+    z(active[i]) = za(i);
+  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
+  const VectorXd w = chain.m_dense * z + chain.split.q;  // the undamped w
+  EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+}
+
 TEST(ReducedTangent, ActiveSetOnTheTangentAgreesWithLemkeOnTheDenseMatrix) {
   for (unsigned seed : {1u, 2u, 3u}) {
     ChainLcp chain;
@@ -109,6 +145,13 @@ TEST(ReducedTangent, ActiveSetOnTheTangentAgreesWithLemkeOnTheDenseMatrix) {
     EXPECT_LE((r.z - lemke.z).cwiseAbs().maxCoeff(), 1e-9 * lemke.z.cwiseAbs().maxCoeff());
     EXPECT_LE(r.residuals.worst_relative(), 1e-9);
     EXPECT_GT(equations.factorizations(), 0);
+    // Projected Newton on the tangent from the first iterate on: the same solution.
+    ActiveSetOptions newton_at_once;
+    newton_at_once.stall_iterations = 0;
+    ReducedTangentEquations again(chain.split, chain.k, tangent);
+    const LcpResult pn = ActiveSetLcp(newton_at_once).solve(again);
+    ASSERT_EQ(pn.status, LcpStatus::solved) << to_string(pn.status) << " seed " << seed;
+    EXPECT_LE((pn.z - lemke.z).cwiseAbs().maxCoeff(), 1e-9 * lemke.z.cwiseAbs().maxCoeff());
   }
 }
 

@@ -81,27 +81,33 @@ class ColumnEquations final : public ActiveSetEquations {
       : problem_(problem),
         singular_tolerance_(singular_tolerance),
         slot_(static_cast<std::size_t>(problem.size()), -1),
-        known_(problem.size(), 0),
-        m_rows_(problem.size(), 0) {}
+        known_(problem.size(), 0) {}
   [[nodiscard]] Eigen::Index size() const override { return problem_.size(); }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return problem_.q(); }
   [[nodiscard]] Eigen::Index group(Eigen::Index row) const override { return problem_.group(row); }
   [[nodiscard]] int group_rank(Eigen::Index row) const override { return problem_.group_rank(row); }
+  [[nodiscard]] bool symmetric() const override { return problem_.symmetric(); }
 
-  Solution solve(const std::vector<Eigen::Index>& active) override {
+  using ActiveSetEquations::solve;
+  Solution solve(const std::vector<Eigen::Index>& rows, const Damping& damping) override {
     const Eigen::Index n = size();
-    rows_ = active;
-    fetch(rows_);
-    const auto k = static_cast<Eigen::Index>(rows_.size());
-    m_rows_.resize(n, k);
+    fetch(rows);
+    const auto k = static_cast<Eigen::Index>(rows.size());
+    Eigen::MatrixXd m_rows(n, k);  // the columns of M of the active rows
     for (Eigen::Index c = 0; c < k; ++c)
-      m_rows_.col(c) =
-          known_.col(slot_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(c)])]);
+      m_rows.col(c) =
+          known_.col(slot_[static_cast<std::size_t>(rows[static_cast<std::size_t>(c)])]);
     Eigen::MatrixXd a(k, k);
     Eigen::VectorXd rhs(k);
     for (Eigen::Index r = 0; r < k; ++r) {
-      rhs(r) = -q()(rows_[static_cast<std::size_t>(r)]);
-      a.row(r) = m_rows_.row(rows_[static_cast<std::size_t>(r)]);
+      const Eigen::Index i = rows[static_cast<std::size_t>(r)];
+      a.row(r) = m_rows.row(i);
+      rhs(r) = -q()(i);
+      if (damping.factor.size() > 0) {
+        const double d = damping.factor(r) * a(r, r);
+        a(r, r) += d;
+        rhs(r) += d * damping.center(i);
+      }
     }
     Solution out;
     out.z = Eigen::VectorXd::Zero(n);
@@ -110,22 +116,40 @@ class ColumnEquations final : public ActiveSetEquations {
       const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
       if (!(lu.rcond() > singular_tolerance_)) {
         if (problem_.symmetric())
-          out.ray = kernel_certificate(a, m_rows_, q(), rows_);
+          out.ray = kernel_certificate(a, m_rows, q(), rows);
         return out;
       }
       za = lu.solve(rhs);
       za += lu.solve(rhs - a * za);  // one step of iterative refinement
       for (Eigen::Index r = 0; r < k; ++r)
-        out.z(rows_[static_cast<std::size_t>(r)]) = za(r);
+        out.z(rows[static_cast<std::size_t>(r)]) = za(r);
     }
-    out.w = m_rows_ * za + q();
-    out.w_scale = m_rows_.cwiseAbs() * za.cwiseAbs() + q().cwiseAbs();
+    out.w = m_rows * za + q();
+    out.w_scale = m_rows.cwiseAbs() * za.cwiseAbs() + q().cwiseAbs();
     out.regular = true;
     return out;
   }
 
+  // Any z: the columns of its support are asked for if not known yet.
   LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override {
-    return make_lcp_result(q(), rows_, m_rows_, status, std::move(z), steps);
+    std::vector<Eigen::Index> support;
+    for (Eigen::Index i = 0; i < z.size(); ++i)
+      if (z(i) != 0.0)
+        support.push_back(i);
+    fetch(support);
+    LcpResult r;
+    r.status = status;
+    r.w = q();
+    Eigen::VectorXd sizes = q().cwiseAbs();
+    for (Eigen::Index i : support) {
+      const auto column = known_.col(slot_[static_cast<std::size_t>(i)]);
+      r.w += z(i) * column;
+      sizes += std::abs(z(i)) * column.cwiseAbs();
+    }
+    r.residuals = measure(z, r.w, sizes);
+    r.z = std::move(z);
+    r.steps = steps;
+    return r;
   }
 
  private:
@@ -149,9 +173,108 @@ class ColumnEquations final : public ActiveSetEquations {
   double singular_tolerance_;
   std::vector<Eigen::Index> slot_;
   Eigen::MatrixXd known_;
-  std::vector<Eigen::Index> rows_;  // the active rows of the last solve
-  Eigen::MatrixXd m_rows_;          // and their columns of M
 };
+
+// The objective of the quadratic program of a symmetric LCP, 1/2 z.M z + q.z, from w = M z + q.
+double objective(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const Eigen::VectorXd& q) {
+  return 0.5 * z.dot(w + q);
+}
+
+/// Sufficient decrease (Armijo) of the projected line search, and its most halvings.
+constexpr double kArmijo = 1e-4;
+constexpr int kHalvings = 30;
+/// Relative damping of the diagonal of a group with more free rows than its rank, and of a whole
+/// singular block that is no mechanism.
+constexpr double kDamping = 1e-2;
+
+// Projected Newton on the quadratic program of a symmetric LCP (Bertsekas 1982), the block rule
+// made monotone: from z >= 0, the free rows F are those with z_i > 0 or w_i < 0; the Newton
+// point solves M_FF z_F = -q_F (z = 0 elsewhere), and the step goes along the path
+// max(0, z + t (z_N - z)), t = 1, 1/2, ..., to the first point that lowers the objective
+// enough. The direction descends: on F it is -M_FF^-1 w_F, and the rows the projection clips
+// have w_i < 0 and d_i < 0, which only steepens the path. So no active set comes back, where the
+// block rule can swap tens of rows forever near a limit load. A group with more free rows than
+// its rank, or a singular block that is no mechanism, is damped (a proximal step), which keeps
+// the descent.
+LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& options,
+                           Eigen::VectorXd z, int iteration, bool trace) {
+  const Eigen::Index n = problem.size();
+  const Eigen::VectorXd& q = problem.q();
+  z = z.cwiseMax(0.0);
+  LcpResult at = problem.result(LcpStatus::solved, z, iteration);
+  double f = objective(z, at.w, q);
+  // Rows the last Newton point took below zero and the step left at zero stay out of the next
+  // free set, although w_i < 0 there: else each Newton point asks for them to go negative again
+  // and the clipped steps stall (Bertsekas's reason for his epsilon-active set).
+  std::vector<char> held(static_cast<std::size_t>(n), 0);
+  for (int k = 0; k < options.max_iterations; ++k, ++iteration) {
+    if (at.residuals.worst_relative() <= options.accuracy) {
+      at.status = LcpStatus::solved;
+      return at;
+    }
+    std::vector<Eigen::Index> rows;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (z(i) > 0.0 || (at.w(i) < 0.0 && !held[static_cast<std::size_t>(i)]))
+        rows.push_back(i);
+    // Damp the rows of the groups that have more free rows than their rank (consecutive here).
+    ActiveSetEquations::Damping damping{
+        Eigen::VectorXd::Zero(static_cast<Eigen::Index>(rows.size())), z};
+    for (std::size_t a = 0; a < rows.size();) {
+      std::size_t b = a;
+      while (b < rows.size() && problem.group(rows[b]) == problem.group(rows[a]))
+        ++b;
+      if (b - a > static_cast<std::size_t>(problem.group_rank(rows[a])))
+        damping.factor.segment(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b - a))
+            .setConstant(kDamping);
+      a = b;
+    }
+    ActiveSetEquations::Solution step = problem.solve(rows, damping);
+    if (!step.regular && step.ray.size() == n) {
+      LcpResult collapse =
+          problem.result(LcpStatus::no_solution, Eigen::VectorXd::Zero(n), iteration);
+      collapse.ray = std::move(step.ray);
+      return collapse;
+    }
+    if (!step.regular) {
+      damping.factor.setConstant(kDamping);
+      step = problem.solve(rows, damping);
+    }
+    if (!step.regular) {
+      at.status = LcpStatus::numerical_failure;
+      return at;
+    }
+    const Eigen::VectorXd d = step.z - z;
+    bool descended = false;
+    double t = 1.0;
+    for (int h = 0; h <= kHalvings && !descended; ++h, t *= 0.5) {
+      Eigen::VectorXd trial = (z + t * d).cwiseMax(0.0);
+      LcpResult next = problem.result(LcpStatus::solved, trial, iteration + 1);
+      const double f_next = objective(trial, next.w, q);
+      // The Newton point itself is taken when it solves the LCP: near a solution the decrease
+      // is round-off and would be refused.
+      if (f_next <= f + kArmijo * at.w.dot(trial - z) ||
+          (h == 0 && next.residuals.worst_relative() <= options.accuracy)) {
+        descended = true;
+        z = std::move(trial);
+        at = std::move(next);
+        f = f_next;
+      }
+    }
+    for (Eigen::Index i = 0; i < n; ++i)
+      held[static_cast<std::size_t>(i)] = step.z(i) < 0.0 && z(i) == 0.0;
+    if (trace)
+      std::fprintf(stderr, "    newton %d |F| %zu damped %td step %g objective %.12g worst %g\n",
+                   iteration, rows.size(), (damping.factor.array() > 0.0).count(), 2.0 * t, f,
+                   at.residuals.worst_relative());
+    if (!descended) {
+      at.status = LcpStatus::numerical_failure;
+      return at;
+    }
+  }
+  at.status = at.residuals.worst_relative() <= options.accuracy ? LcpStatus::solved
+                                                                : LcpStatus::iteration_limit;
+  return at;
+}
 
 }  // namespace
 
@@ -218,10 +341,22 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     }
   };
   const bool trace = std::getenv("BIMROCK_DEBUG_ACTIVE_SET") != nullptr;  // per-iteration lines
+  // Where the block rule does not converge, a symmetric problem goes on with projected Newton
+  // from the last iterate (z, from the last solve): it cannot cycle.
+  const bool newton = options_.projected_newton && problem.symmetric();
+  auto give_up = [&](LcpStatus status, int iteration) {
+    if (newton)
+      return projected_newton(problem, options_, z, iteration, trace);
+    return solved_or(status, iteration);
+  };
+  Eigen::Index fewest_violated = n + 1;  // the best count of violated rows so far
+  int stalled = 0;                       // iterations since it was last lowered
   for (int iteration = 1; iteration <= 2 * options_.max_iterations; ++iteration) {
     if (!single && iteration > options_.max_iterations)
       break;
     if (!seen.insert(active).second) {
+      if (newton)
+        return give_up(LcpStatus::iteration_limit, iteration);
       if (single || last_w.size() == 0 || !options_.murty_after_cycle)
         return solved_or(LcpStatus::iteration_limit, iteration);
       single = true;
@@ -235,6 +370,8 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       if (active[static_cast<std::size_t>(i)])
         rows.push_back(i);
     ActiveSetEquations::Solution step = problem.solve(rows);
+    if (!step.regular && step.ray.size() != n && newton)
+      return give_up(LcpStatus::numerical_failure, iteration);  // singular, not a mechanism
     if (!step.regular) {
       z.setZero();
       LcpResult failed = result(LcpStatus::numerical_failure, iteration);
@@ -246,23 +383,25 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     }
     z = std::move(step.z);
     const Eigen::VectorXd& w = step.w;
-    {
-      // Rows that the rule would change only for round-off (z_i or w_i ~ 0, a degenerate
-      // solution) can flip back and forth without a cycle the set check sees: an iterate that
-      // is a solution to round-off is one, whatever the rule says.
-      const double z_top = z.cwiseAbs().maxCoeff();
-      bool round_off_only = true;
-      for (Eigen::Index i = 0; i < n && round_off_only; ++i)
-        round_off_only = active[static_cast<std::size_t>(i)] ? z(i) >= -kRoundOff * z_top
-                                                             : w(i) >= -kRoundOff * step.w_scale(i);
-      if (round_off_only) {
-        const Eigen::VectorXd iterate = z;
-        LcpResult r = solved_or(LcpStatus::numerical_failure, iteration);
-        if (r.status == LcpStatus::solved)
-          return r;
-        z = iterate;
-      }
+    // Rows that the rule would change only for round-off (z_i or w_i ~ 0, a degenerate
+    // solution) can flip back and forth without a cycle the set check sees: an iterate that is a
+    // solution to round-off is one, whatever the rule says.
+    const double z_top = z.cwiseAbs().maxCoeff();
+    Eigen::Index violated = 0;
+    for (Eigen::Index i = 0; i < n; ++i)
+      violated += active[static_cast<std::size_t>(i)] ? z(i) < -kRoundOff * z_top
+                                                      : w(i) < -kRoundOff * step.w_scale(i);
+    if (violated == 0) {
+      const Eigen::VectorXd iterate = z;
+      LcpResult r = solved_or(LcpStatus::numerical_failure, iteration);
+      if (r.status == LcpStatus::solved)
+        return r;
+      z = iterate;
     }
+    // Judice and Pires (1994): the block rule is trusted while it lowers the count of violated
+    // rows; near a limit load it can swap tens of rows forever instead.
+    stalled = violated < fewest_violated ? 0 : stalled + 1;
+    fewest_violated = std::min(fewest_violated, violated);
     std::vector<char> next(static_cast<std::size_t>(n));
     for (Eigen::Index i = 0; i < n; ++i)
       next[static_cast<std::size_t>(i)] = z(i) > w(i);
@@ -276,19 +415,21 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
         added += next[static_cast<std::size_t>(i)] && !active[static_cast<std::size_t>(i)];
         dropped += !next[static_cast<std::size_t>(i)] && active[static_cast<std::size_t>(i)];
       }
-      std::fprintf(stderr, "    it %d |A| %zu +%d -%d min z %g min w %g\n", iteration, rows.size(),
-                   added, dropped, z.minCoeff(), w.minCoeff());
+      std::fprintf(stderr, "    it %d |A| %zu +%d -%d violated %td min z %g min w %g\n", iteration,
+                   rows.size(), added, dropped, violated, z.minCoeff(), w.minCoeff());
     }
     last_active = active;
     last_w = w;
+    if (newton && stalled >= options_.stall_iterations)
+      return give_up(LcpStatus::iteration_limit, iteration);
     if (single && changed)
       murty_step();
     else
       active = std::move(next);
     if (!changed)
-      return solved_or(LcpStatus::numerical_failure, iteration);
+      return give_up(LcpStatus::numerical_failure, iteration);
   }
-  return solved_or(LcpStatus::iteration_limit, options_.max_iterations);
+  return give_up(LcpStatus::iteration_limit, options_.max_iterations);
 }
 
 }  // namespace bimrock

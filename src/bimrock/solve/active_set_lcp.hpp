@@ -15,9 +15,12 @@
 /// - a singular active block of a symmetric M (associated flow) is tested as the mechanism of a
 ///   collapse: its kernel vector, if non-negative, M v <= 0 on every row and q . v < 0, is a
 ///   Farkas certificate that no solution exists (no_solution, with the vector as the ray).
-/// Otherwise it answers solved, or iteration_limit / numerical_failure (cycling, a singular
-/// block that proves nothing, a result that fails the check): the caller then falls back to
-/// Lemke.
+/// Near a limit load the block rule can swap tens of rows at every iteration without end. A
+/// symmetric M then goes on with projected Newton on the equivalent quadratic program (the same
+/// equations of a free set, a projected line search that lowers the objective at every step,
+/// and a proximal damping of singular blocks): it cannot cycle. A non-symmetric M goes on with
+/// Murty's rule after a cycle. Otherwise it answers solved, or iteration_limit /
+/// numerical_failure (a result that fails the check): the caller then falls back to Lemke.
 #include <utility>
 
 #include <bimrock/solve/lcp.hpp>
@@ -28,8 +31,14 @@ namespace bimrock {
 struct ActiveSetOptions {
   /// Iterations of the block rule, and again as many of Murty's rule after a cycle.
   int max_iterations = 50;
-  /// After a cycle of the block rule, go on with Murty's single-row rule (else give up).
+  /// After a cycle of the block rule, go on with Murty's single-row rule (else give up), unless
+  /// projected Newton takes over.
   bool murty_after_cycle = true;
+  /// A symmetric problem goes on with the projected Newton iteration where the block rule does
+  /// not converge: a cycle, a singular block that proves no collapse, or stall_iterations
+  /// iterations in a row that have not lowered the count of violated rows below its best.
+  bool projected_newton = true;
+  int stall_iterations = 3;
   /// The result must satisfy LcpResiduals::worst_relative() <= accuracy.
   double accuracy = 1e-9;
   /// The active block is singular when the reciprocal condition estimate of its LU is below
@@ -48,6 +57,10 @@ class ActiveSetEquations {
   /// As LcpColumns::group and group_rank.
   [[nodiscard]] virtual Eigen::Index group(Eigen::Index row) const { return row; }
   [[nodiscard]] virtual int group_rank(Eigen::Index /*row*/) const { return 1; }
+  /// M is symmetric (associated flow): the LCP is then the optimality condition of the convex
+  /// quadratic program min 1/2 z.M z + q.z over z >= 0, which the iteration uses when the
+  /// block rule stalls.
+  [[nodiscard]] virtual bool symmetric() const { return false; }
   struct Solution {
     bool regular = false;     ///< false: M_AA is singular (or could not be factorized)
     Eigen::VectorXd z;        ///< zero off the active rows, M_AA z_A = -q_A on them
@@ -55,9 +68,22 @@ class ActiveSetEquations {
     Eigen::VectorXd w_scale;  ///< the size of the terms that sum to each w_i (|M| |z| + |q|)
     Eigen::VectorXd ray;  ///< if singular: a Farkas certificate of no solution, if one was found
   };
-  /// The solution of the equations of the active rows `active` (sorted).
-  [[nodiscard]] virtual Solution solve(const std::vector<Eigen::Index>& active) = 0;
-  /// z (zero off the rows of the last solve) with its w and residuals on the whole LCP.
+  /// A proximal term D (z_A - center_A) added to the active rows' equations, with D diagonal:
+  /// factor(r) >= 0 (one per active row; empty for none) times the row's own diagonal term (M_rr,
+  /// or N_rr for a representation that keeps M in parts). It makes a singular active block
+  /// regular, and the step from `center` still lowers the quadratic program's objective.
+  struct Damping {
+    Eigen::VectorXd factor;
+    Eigen::VectorXd center;  ///< a z (all rows)
+  };
+  /// The solution of the equations of the active rows `active` (sorted):
+  /// M_AA z_A + D (z_A - center_A) = -q_A, z = 0 elsewhere.
+  [[nodiscard]] virtual Solution solve(const std::vector<Eigen::Index>& active,
+                                       const Damping& damping) = 0;
+  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active) {
+    return solve(active, Damping{});
+  }
+  /// Any z with its w = M z + q and residuals on the whole LCP.
   [[nodiscard]] virtual LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) = 0;
 };
 

@@ -93,8 +93,9 @@ ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const Spar
                                                  SparseCholesky& tangent)
     : lcp_(lcp), k_(k), tangent_(tangent), c_transposed_(lcp.c->transpose()) {}
 
-ActiveSetEquations::Solution ReducedTangentEquations::solve(
-    const std::vector<Eigen::Index>& active) {
+ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Eigen::Index>& active,
+                                                            const Damping& damping) {
+  const bool damped = damping.factor.size() > 0;
   const Eigen::Index m = size();
   const Eigen::Index n = lcp_.k_lower->rows();
   Solution out;
@@ -119,6 +120,9 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
       for (Eigen::Index j = 0; j < r; ++j)
         local(i, j) = lcp_.n->coeff(active[a + static_cast<std::size_t>(i)],
                                     active[a + static_cast<std::size_t>(j)]);
+    if (damped)
+      for (Eigen::Index i = 0; i < r; ++i)
+        local(i, i) *= 1.0 + damping.factor(static_cast<Eigen::Index>(a) + i);
     const Eigen::PartialPivLU<Eigen::MatrixXd> lu(local);
     if (!(lu.rcond() > kSingularLocal))
       return out;
@@ -182,9 +186,17 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(
   };
   // Near a mechanism the tangent is ill-conditioned (K and the plastic part nearly cancel):
   // one step of refinement on the LCP's own equations, its residual w_A measured with K.
-  add_solution(q());
+  // The damping D (z - center) is D z on the left and -D center in q.
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(m);
+  if (damped)
+    for (std::size_t r = 0; r < active.size(); ++r)
+      d(active[r]) =
+          damping.factor(static_cast<Eigen::Index>(r)) * lcp_.n->coeff(active[r], active[r]);
+  const Eigen::VectorXd shifted_q =
+      damped ? Eigen::VectorXd(q() - d.cwiseProduct(damping.center)) : q();
+  add_solution(shifted_q);
   Eigen::VectorXd x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
-  add_solution(Eigen::VectorXd(q() + *lcp_.n * out.z - *lcp_.c * x));
+  add_solution(Eigen::VectorXd(shifted_q + *lcp_.n * out.z - *lcp_.c * x + d.cwiseProduct(out.z)));
   x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
   out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
   out.w_scale =

@@ -52,7 +52,11 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   [[nodiscard]] int group_rank(Eigen::Index row) const override {
     return lcp_.group_rank[static_cast<std::size_t>(row)];
   }
-  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active) override;
+  [[nodiscard]] bool symmetric() const override { return true; }
+  using ActiveSetEquations::solve;
+  /// The damping scales N_rr (it is added to N_AA: the tangent keeps K's pattern).
+  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active,
+                               const Damping& damping) override;
   [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
 
   /// Numeric factorizations of the tangent so far.
