@@ -242,6 +242,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     candidate[p] = s.points[p].gap > 0.0 || predicted_f[p] > tol ? 1 : 0;
   clock.lap("increments: candidates");
 
+  // The warm start: the rows that yielded in the last increment, then those of the last round
+  // (a round adds only the points the last one violated: its solution is nearly this one's).
+  std::set<std::pair<int, int>> warm_rows = solvers.last_active;
   for (t.rounds = 1; t.rounds <= opt.max_rounds; ++t.rounds) {
     std::vector<int> candidates;
     for (std::size_t p = 0; p < candidate.size(); ++p)
@@ -265,7 +268,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       const YieldRow& row = sys.rows[r];
       if (ctx.points[row.point].is_interface() && row.mode == kOpeningMode)
         gap_old(r) = s.points[row.point].gap;
-      if (gap_old(r) > 0.0 || solvers.last_active.count({row.point, row.mode}))
+      if (gap_old(r) > 0.0 || warm_rows.count({row.point, row.mode}))
         warm(r) = 1.0;
     }
     const double solved_before = solvers.columns.seconds();
@@ -391,11 +394,12 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       if (!candidate[p])
         candidate[p] = added = true;
     }
+    warm_rows.clear();
+    for (int r = 0; r < m; ++r)
+      if (lambda(r) != 0.0 || z(r) > 0.0)
+        warm_rows.insert({sys.rows[r].point, sys.rows[r].mode});
     if (!added) {
-      solvers.last_active.clear();
-      for (int r = 0; r < m; ++r)
-        if (lambda(r) != 0.0 || z(r) > 0.0)
-          solvers.last_active.insert({sys.rows[r].point, sys.rows[r].mode});
+      solvers.last_active = std::move(warm_rows);
       t.rows = sys.rows;
       t.lambda = lambda;
       t.status = Trial::Status::carried;
