@@ -183,9 +183,11 @@ double objective(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const Eigen
 /// Sufficient decrease (Armijo) of the projected line search, and its most halvings.
 constexpr double kArmijo = 1e-4;
 constexpr int kHalvings = 30;
-/// Relative damping of the diagonal of a group with more free rows than its rank, and of a whole
-/// singular block that is no mechanism.
+/// Relative damping of the diagonal of a group with more free rows than its rank, and the first
+/// of a whole singular block that is no mechanism; the latter falls tenfold after each full step
+/// and ends below the smallest.
 constexpr double kDamping = 1e-2;
+constexpr double kSmallestDamping = 1e-6;
 
 // Projected Newton on the quadratic program of a symmetric LCP (Bertsekas 1982), the block rule
 // made monotone: from z >= 0, the free rows F are those with z_i > 0 or w_i < 0; the Newton
@@ -207,6 +209,9 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
   // free set, although w_i < 0 there: else each Newton point asks for them to go negative again
   // and the clipped steps stall (Bertsekas's reason for his epsilon-active set).
   std::vector<char> held(static_cast<std::size_t>(n), 0);
+  // The damping of every row once a block was singular and proved no collapse: kept (falling)
+  // for the next steps, where each undamped try costs a failed factorization and a kernel search.
+  double damp_all = 0.0;
   for (int k = 0; k < options.max_iterations; ++k, ++iteration) {
     if (at.residuals.worst_relative() <= options.accuracy) {
       at.status = LcpStatus::solved;
@@ -228,6 +233,7 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
             .setConstant(kDamping);
       a = b;
     }
+    damping.factor = damping.factor.cwiseMax(damp_all);
     ActiveSetEquations::Solution step = problem.solve(rows, damping);
     if (!step.regular && step.ray.size() == n) {
       LcpResult collapse =
@@ -235,8 +241,9 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
       collapse.ray = std::move(step.ray);
       return collapse;
     }
-    if (!step.regular) {
-      damping.factor.setConstant(kDamping);
+    if (!step.regular && damp_all == 0.0) {
+      damp_all = kDamping;
+      damping.factor = damping.factor.cwiseMax(damp_all);
       step = problem.solve(rows, damping);
     }
     if (!step.regular) {
@@ -244,17 +251,16 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
       return at;
     }
     const Eigen::VectorXd d = step.z - z;
-    bool descended = false;
-    double t = 1.0;
-    for (int h = 0; h <= kHalvings && !descended; ++h, t *= 0.5) {
+    double taken = 0.0;  // the step length that lowered the objective enough (0: none)
+    for (double t = 1.0; taken == 0.0 && t >= std::ldexp(1.0, -kHalvings); t *= 0.5) {
       Eigen::VectorXd trial = (z + t * d).cwiseMax(0.0);
       LcpResult next = problem.result(LcpStatus::solved, trial, iteration + 1);
       const double f_next = objective(trial, next.w, q);
       // The Newton point itself is taken when it solves the LCP: near a solution the decrease
       // is round-off and would be refused.
       if (f_next <= f + kArmijo * at.w.dot(trial - z) ||
-          (h == 0 && next.residuals.worst_relative() <= options.accuracy)) {
-        descended = true;
+          (t == 1.0 && next.residuals.worst_relative() <= options.accuracy)) {
+        taken = t;
         z = std::move(trial);
         at = std::move(next);
         f = f_next;
@@ -262,11 +268,13 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
     }
     for (Eigen::Index i = 0; i < n; ++i)
       held[static_cast<std::size_t>(i)] = step.z(i) < 0.0 && z(i) == 0.0;
+    if (taken == 1.0)
+      damp_all = damp_all * 0.1 < kSmallestDamping ? 0.0 : damp_all * 0.1;
     if (trace)
       std::fprintf(stderr, "    newton %d |F| %zu damped %td step %g objective %.12g worst %g\n",
-                   iteration, rows.size(), (damping.factor.array() > 0.0).count(), 2.0 * t, f,
+                   iteration, rows.size(), (damping.factor.array() > 0.0).count(), taken, f,
                    at.residuals.worst_relative());
-    if (!descended) {
+    if (taken == 0.0) {
       at.status = LcpStatus::numerical_failure;
       return at;
     }
@@ -344,7 +352,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
   // Where the block rule does not converge, a symmetric problem goes on with projected Newton
   // from the last iterate (z, from the last solve): it cannot cycle.
   const bool newton = options_.projected_newton && problem.symmetric();
-  auto give_up = [&](LcpStatus status, int iteration) {
+  auto after_block_rule = [&](LcpStatus status, int iteration) {
     if (newton)
       return projected_newton(problem, options_, z, iteration, trace);
     return solved_or(status, iteration);
@@ -356,7 +364,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       break;
     if (!seen.insert(active).second) {
       if (newton)
-        return give_up(LcpStatus::iteration_limit, iteration);
+        return after_block_rule(LcpStatus::iteration_limit, iteration);
       if (single || last_w.size() == 0 || !options_.murty_after_cycle)
         return solved_or(LcpStatus::iteration_limit, iteration);
       single = true;
@@ -371,7 +379,8 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
         rows.push_back(i);
     ActiveSetEquations::Solution step = problem.solve(rows);
     if (!step.regular && step.ray.size() != n && newton)
-      return give_up(LcpStatus::numerical_failure, iteration);  // singular, not a mechanism
+      return after_block_rule(LcpStatus::numerical_failure,
+                              iteration);  // singular, not a mechanism
     if (!step.regular) {
       z.setZero();
       LcpResult failed = result(LcpStatus::numerical_failure, iteration);
@@ -421,15 +430,15 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     last_active = active;
     last_w = w;
     if (newton && stalled >= options_.stall_iterations)
-      return give_up(LcpStatus::iteration_limit, iteration);
+      return after_block_rule(LcpStatus::iteration_limit, iteration);
     if (single && changed)
       murty_step();
     else
       active = std::move(next);
     if (!changed)
-      return give_up(LcpStatus::numerical_failure, iteration);
+      return after_block_rule(LcpStatus::numerical_failure, iteration);
   }
-  return give_up(LcpStatus::iteration_limit, options_.max_iterations);
+  return after_block_rule(LcpStatus::iteration_limit, options_.max_iterations);
 }
 
 }  // namespace bimrock
