@@ -352,9 +352,13 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
   // Where the block rule does not converge, a symmetric problem goes on with projected Newton
   // from the last iterate (z, from the last solve): it cannot cycle.
   const bool newton = options_.projected_newton && problem.symmetric();
+  // It starts from the block rule's iterate, projected on z >= 0, of least objective (z = 0 has
+  // 0): near a limit load a late iterate can be far off (a nearly singular block).
+  Eigen::VectorXd best = Eigen::VectorXd::Zero(n);
+  double best_objective = 0.0;
   auto after_block_rule = [&](LcpStatus status, int iteration) {
     if (newton)
-      return projected_newton(problem, options_, z, iteration, trace);
+      return projected_newton(problem, options_, best, iteration, trace);
     return solved_or(status, iteration);
   };
   Eigen::Index fewest_violated = n + 1;  // the best count of violated rows so far
@@ -378,9 +382,8 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       if (active[static_cast<std::size_t>(i)])
         rows.push_back(i);
     ActiveSetEquations::Solution step = problem.solve(rows);
-    if (!step.regular && step.ray.size() != n && newton)
-      return after_block_rule(LcpStatus::numerical_failure,
-                              iteration);  // singular, not a mechanism
+    if (!step.regular && step.ray.size() != n && newton)  // singular, not a mechanism
+      return after_block_rule(LcpStatus::numerical_failure, iteration);
     if (!step.regular) {
       z.setZero();
       LcpResult failed = result(LcpStatus::numerical_failure, iteration);
@@ -392,6 +395,14 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     }
     z = std::move(step.z);
     const Eigen::VectorXd& w = step.w;
+    if (newton) {
+      Eigen::VectorXd projected = z.cwiseMax(0.0);
+      const double f = objective(projected, problem.result(LcpStatus::solved, projected, 0).w, q);
+      if (f < best_objective) {
+        best_objective = f;
+        best = std::move(projected);
+      }
+    }
     // Rows that the rule would change only for round-off (z_i or w_i ~ 0, a degenerate
     // solution) can flip back and forth without a cycle the set check sees: an iterate that is a
     // solution to round-off is one, whatever the rule says.
