@@ -67,6 +67,30 @@ void make_chain(int blocks, unsigned seed, ChainLcp& out) {
   ASSERT_TRUE(out.k.factorize(out.k_lower));
 }
 
+// The second method: (M_AA + D) z_A = -q_A + D center_A with D = factor N_rr (no damping:
+// M_AA z_A = -q_A), formed densely and solved by LU; z = 0 off A.
+VectorXd dense_solution(const ChainLcp& chain, const std::vector<Eigen::Index>& active,
+                        const ActiveSetEquations::Damping& damping) {
+  const auto k = static_cast<Eigen::Index>(active.size());
+  MatrixXd a(k, k);
+  VectorXd rhs(k);
+  for (Eigen::Index i = 0; i < k; ++i) {
+    for (Eigen::Index j = 0; j < k; ++j)
+      a(i, j) = chain.m_dense(active[i], active[j]);
+    rhs(i) = -chain.split.q(active[i]);
+    if (damping.factor.size() > 0) {
+      const double d = damping.factor(i) * chain.n.coeff(active[i], active[i]);
+      a(i, i) += d;
+      rhs(i) += d * damping.center(active[i]);
+    }
+  }
+  const VectorXd za = a.partialPivLu().solve(rhs);
+  VectorXd z = VectorXd::Zero(chain.split.q.size());
+  for (Eigen::Index i = 0; i < k; ++i)
+    z(active[i]) = za(i);
+  return z;
+}
+
 TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   ChainLcp chain;
   make_chain(40, 7, chain);
@@ -77,19 +101,7 @@ TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
     active.push_back(r);
   const ActiveSetEquations::Solution s = equations.solve(active);
   ASSERT_TRUE(s.regular);
-  // Dense LU of M_AA z_A = -q_A.
-  const auto k = static_cast<Eigen::Index>(active.size());
-  MatrixXd a(k, k);
-  VectorXd rhs(k);
-  for (Eigen::Index i = 0; i < k; ++i) {
-    rhs(i) = -chain.split.q(active[i]);
-    for (Eigen::Index j = 0; j < k; ++j)
-      a(i, j) = chain.m_dense(active[i], active[j]);
-  }
-  const VectorXd za = a.partialPivLu().solve(rhs);
-  VectorXd z = VectorXd::Zero(equations.size());
-  for (Eigen::Index i = 0; i < k; ++i)
-    z(active[i]) = za(i);
+  const VectorXd z = dense_solution(chain, active, {});
   const VectorXd w = chain.m_dense * z + chain.split.q;
   EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
   EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
@@ -97,8 +109,7 @@ TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
 }
 
 TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {
-  // The proximal equations of projected Newton: (M_AA + D) z_A = -q_A + D center_A with
-  // D = factor N_rr, formed densely and solved by LU.
+  // The proximal equations of projected Newton.
   ChainLcp chain;
   make_chain(40, 5, chain);
   SparseCholesky tangent;
@@ -106,27 +117,14 @@ TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {
   std::vector<Eigen::Index> active;
   for (Eigen::Index r = 0; r < equations.size(); r += 2)
     active.push_back(r);
-  const auto k = static_cast<Eigen::Index>(active.size());
   std::mt19937 rng(3);
-  ActiveSetEquations::Damping damping{VectorXd::Zero(k),
+  ActiveSetEquations::Damping damping{VectorXd::Zero(static_cast<Eigen::Index>(active.size())),
                                       testing::random_vector(equations.size(), rng)};
-  for (Eigen::Index i = 0; i < k; i += 3)
+  for (Eigen::Index i = 0; i < damping.factor.size(); i += 3)
     damping.factor(i) = 0.5;
   const ActiveSetEquations::Solution s = equations.solve(active, damping);
   ASSERT_TRUE(s.regular);
-  MatrixXd a(k, k);
-  VectorXd rhs(k);
-  for (Eigen::Index i = 0; i < k; ++i) {
-    for (Eigen::Index j = 0; j < k; ++j)
-      a(i, j) = chain.m_dense(active[i], active[j]);
-    const double d = damping.factor(i) * chain.n.coeff(active[i], active[i]);
-    a(i, i) += d;
-    rhs(i) = -chain.split.q(active[i]) + d * damping.center(active[i]);
-  }
-  const VectorXd za = a.partialPivLu().solve(rhs);
-  VectorXd z = VectorXd::Zero(equations.size());
-  for (Eigen::Index i = 0; i < k; ++i)
-    z(active[i]) = za(i);
+  const VectorXd z = dense_solution(chain, active, damping);
   EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
   const VectorXd w = chain.m_dense * z + chain.split.q;  // the undamped w
   EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
