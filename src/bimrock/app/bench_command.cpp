@@ -131,8 +131,8 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
                        "  stage {} inc {} factor {:.4f} lcp {} yielding {} open {} as-it {} "
                        "tangent {} pivots {} rounds {} {:.3f} s\n",
                        r.stage, r.increment, r.stage_factor, r.lcp_size, r.yielding_points,
-                       r.open_points, r.active_set_iterations, r.tangent_factorizations,
-                       r.pivots, r.rounds, r.seconds);
+                       r.open_points, r.active_set_iterations, r.tangent_factorizations, r.pivots,
+                       r.rounds, r.seconds);
           writing += seconds_since(w);
         });
     run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
