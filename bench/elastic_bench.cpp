@@ -20,13 +20,15 @@ void set_size_counters(benchmark::State& state, const Model& m) {
 
 void BM_BuildModel(benchmark::State& state) {
   const CaseSpec c = bench::brick_mass_case(static_cast<int>(state.range(0)));
-  for (auto _ : state) benchmark::DoNotOptimize(build_model(c));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(build_model(c));
   set_size_counters(state, build_model(c));
 }
 
 void BM_AssembleStiffness(benchmark::State& state) {
   const Model m = build_model(bench::brick_mass_case(static_cast<int>(state.range(0))));
-  for (auto _ : state) benchmark::DoNotOptimize(assemble_stiffness_lower(m));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(assemble_stiffness_lower(m));
   set_size_counters(state, m);
 }
 
@@ -45,7 +47,8 @@ void BM_Factorize(benchmark::State& state) {
   const SparseMatrix k = assemble_stiffness_lower(m);
   SparseCholesky chol;
   chol.analyze(k, 6);
-  for (auto _ : state) benchmark::DoNotOptimize(chol.factorize(k));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(chol.factorize(k));
   set_size_counters(state, m);
   state.counters["factor_nnz"] = static_cast<double>(chol.factor_nonzeros());
 }
@@ -57,7 +60,8 @@ void BM_Solve(benchmark::State& state) {
   SparseCholesky chol;
   chol.analyze(k, 6);
   chol.factorize(k);
-  for (auto _ : state) benchmark::DoNotOptimize(chol.solve(p));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(chol.solve(p));
   set_size_counters(state, m);
 }
 
@@ -65,7 +69,8 @@ void BM_Solve(benchmark::State& state) {
 // evaluate every block and interface (no results written).
 void BM_ElasticAnalysis(benchmark::State& state) {
   const Model m = build_model(bench::brick_mass_case(static_cast<int>(state.range(0))));
-  for (auto _ : state) benchmark::DoNotOptimize(solve_elastic(m));
+  for (auto _ : state)
+    benchmark::DoNotOptimize(solve_elastic(m));
   set_size_counters(state, m);
 }
 

@@ -16,7 +16,8 @@ CaseSpec two_columns() {
   c.block_materials = {testing::rock(10e9, 0.2)};
   c.joint_materials = {testing::springs("joint", 1e10, 1e10)};
   std::vector<Polygon> p = brick_pattern(1, 2, 1.0, 1.0, Stagger::none);
-  for (const Polygon& q : brick_pattern(1, 2, 1.0, 1.0, Stagger::none, Vec2(2.0, 0.0))) p.push_back(q);
+  for (const Polygon& q : brick_pattern(1, 2, 1.0, 1.0, Stagger::none, Vec2(2.0, 0.0)))
+    p.push_back(q);
   c.blocks = testing::blocks_of(p);
   c.default_joint = "joint";
   return c;

@@ -48,7 +48,8 @@ Eigen::MatrixXd lcp_matrix(const Model& m, const YieldSystem& sys) {
 
 std::vector<int> all_points(const std::vector<YieldPoint>& points) {
   std::vector<int> all(points.size());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+  for (std::size_t k = 0; k < all.size(); ++k)
+    all[k] = static_cast<int>(k);
   return all;
 }
 
@@ -67,8 +68,8 @@ TEST(YieldSystem, NonAssociatedFlowDoesNot) {
   const Model m = plastic_assembly(0.6, 0.0, false);
   const auto points = make_yield_points(m);
   const std::vector<PlasticState> states(points.size());
-  const YieldSystem sys =
-      assemble_yield_system(m, points, states, Eigen::VectorXd::Zero(m.n_dofs()), all_points(points));
+  const YieldSystem sys = assemble_yield_system(
+      m, points, states, Eigen::VectorXd::Zero(m.n_dofs()), all_points(points));
   const Eigen::MatrixXd lcp = lcp_matrix(m, sys);
   EXPECT_GT((lcp - lcp.transpose()).norm(), 1e-3 * lcp.norm());
 }

@@ -58,14 +58,20 @@ INSTANTIATE_TEST_SUITE_P(
     Checks, PolygonDefects,
     ::testing::Values(
         DefectCase{"valid", {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, PolygonDefect::none, 0},
-        DefectCase{"collinear_vertex_allowed", {{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}}}, PolygonDefect::none, 0},
+        DefectCase{"collinear_vertex_allowed",
+                   {{{0, 0}, {0.5, 0}, {1, 0}, {1, 1}}},
+                   PolygonDefect::none,
+                   0},
         DefectCase{"two_vertices", {{{0, 0}, {1, 0}}}, PolygonDefect::too_few_vertices, 0},
         DefectCase{"nan", {{{0, 0}, {1, kNaN}, {1, 1}}}, PolygonDefect::not_finite, 1},
-        DefectCase{"duplicate", {{{0, 0}, {1, 0}, {1, 0}, {0, 1}}}, PolygonDefect::duplicate_vertex, 2},
+        DefectCase{
+            "duplicate", {{{0, 0}, {1, 0}, {1, 0}, {0, 1}}}, PolygonDefect::duplicate_vertex, 2},
         DefectCase{"zero_area", {{{0, 0}, {1, 0}, {2, 0}}}, PolygonDefect::zero_area, 0},
         DefectCase{"clockwise", {{{0, 0}, {0, 1}, {1, 1}, {1, 0}}}, PolygonDefect::clockwise, 0},
-        DefectCase{"reflex", {{{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}}, PolygonDefect::non_convex, 2},
-        DefectCase{"star", {{{0, 0}, {2, 1}, {0, 2}, {1, 0}, {2, 2}}}, PolygonDefect::non_convex, 0}),
+        DefectCase{
+            "reflex", {{{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}}, PolygonDefect::non_convex, 2},
+        DefectCase{
+            "star", {{{0, 0}, {2, 1}, {0, 2}, {1, 0}, {2, 2}}}, PolygonDefect::non_convex, 0}),
     [](const auto& p) { return std::string(p.param.name); });
 
 }  // namespace

@@ -10,7 +10,8 @@ namespace {
 
 double length_of(const std::vector<BoundaryEdge>& edges) {
   double l = 0.0;
-  for (const auto& e : edges) l += e.segment.length();
+  for (const auto& e : edges)
+    l += e.segment.length();
   return l;
 }
 
@@ -29,20 +30,23 @@ TEST(SharedEdges, GridOfThreeByTwoHasSevenInterfaces) {
 
 TEST(SharedEdges, StaggeredEdgeTouchesEachNeighbourOnce) {
   // Two rows of a brick wall, 2 bricks long: row 0 has 2 bricks, row 1 has 2 halves + 1 brick.
-  // Vertical joints: 1 in row 0 + 2 in row 1; the bed joint is cut into 4 pieces at x = 0.5, 1, 1.5.
+  // Vertical joints: 1 in row 0 + 2 in row 1; the bed joint is cut into 4 pieces at x = 0.5,
+  // 1, 1.5.
   const auto blocks = brick_pattern(2, 2, 1.0, 1.0, Stagger::rows);
   ASSERT_EQ(blocks.size(), 5u);
   const auto shared = find_shared_edges(blocks, 1e-9);
   EXPECT_EQ(shared.size(), 7u);
   double bed = 0.0;
   for (const SharedEdge& s : shared)
-    if (std::abs(s.normal.y()) > 0.5) bed += s.segment.length();
+    if (std::abs(s.normal.y()) > 0.5)
+      bed += s.segment.length();
   EXPECT_NEAR(bed, 2.0, 1e-12);
   EXPECT_NEAR(length_of(find_boundary_edges(blocks, shared, 1e-9)), 8.0, 1e-12);
 }
 
 TEST(SharedEdges, BlocksTouchingAtACornerOnlyShareNothing) {
-  const std::vector<Polygon> blocks{{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, {{{1, 1}, {2, 1}, {2, 2}, {1, 2}}}};
+  const std::vector<Polygon> blocks{{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
+                                    {{{1, 1}, {2, 1}, {2, 2}, {1, 2}}}};
   EXPECT_TRUE(find_shared_edges(blocks, 1e-9).empty());
 }
 

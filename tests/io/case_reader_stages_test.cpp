@@ -59,7 +59,8 @@ TEST(CaseReaderStages, ReadsStagesWithLoadAndDisplacementControl) {
     loads:
       points:
         - {at: [1, 1], force: [1000, 0]}
-)", "case.yaml");
+)",
+                                  "case.yaml");
   ASSERT_EQ(c.spec.stages.size(), 2u);
   EXPECT_EQ(c.spec.stages[0].increments, 1);
   EXPECT_EQ(c.spec.stages[0].loads.gravity, Vec2(0, -1));
@@ -86,7 +87,8 @@ TEST(CaseReaderStages, RejectsAResidualWithoutASofteningDistance) {
 TEST(CaseReaderStages, RejectsAFrictionAngleOf90Degrees) {
   std::string text = kBase;
   text.replace(text.find("friction: 30, dilation"), 12, "friction: 90");
-  EXPECT_NE(error_of(text).find("joint_materials.joint.friction: must be an angle"), std::string::npos)
+  EXPECT_NE(error_of(text).find("joint_materials.joint.friction: must be an angle"),
+            std::string::npos)
       << error_of(text);
 }
 
@@ -99,15 +101,19 @@ joint_materials:
 blocks:
   - {material: rock, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
 )";
-  EXPECT_NE(error_of(text).find("case.yaml:5: joint_materials.glue: a continuum interface has no strength"),
+  EXPECT_NE(error_of(text).find(
+                "case.yaml:5: joint_materials.glue: a continuum interface has no strength"),
             std::string::npos)
       << error_of(text);
 }
 
 TEST(CaseReaderStages, RejectsAnUnknownControlKey) {
-  EXPECT_NE(error_of(kBase + "stages:\n  - name: s\n    control: {monitor: A, direction: [1, 0], displacment: 1}\n")
-                .find("case.yaml:14:"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(
+          kBase +
+          "stages:\n  - name: s\n    control: {monitor: A, direction: [1, 0], displacment: 1}\n")
+          .find("case.yaml:14:"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -22,7 +22,9 @@ TEST(LinePlot, NiceTicksAreRoundNumbersCoveringTheRange) {
 
 TEST(LinePlot, WritesAPngAndAnSvg) {
   const auto dir = testing::fresh_folder("bimrock-plot");
-  LinePlot plot{"P at A", "horizontal displacement at A [mm]", "P [kN]",
+  LinePlot plot{"P at A",
+                "horizontal displacement at A [mm]",
+                "P [kN]",
                 {{"A", {0.0, 0.1, 0.2, 3.0}, {0.0, 20.0, 40.0, 40.0}}}};
   write_line_plot(plot, dir / "curve");
   std::ifstream png(dir / "curve.png", std::ios::binary);

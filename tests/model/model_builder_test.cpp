@@ -72,9 +72,11 @@ TEST(ModelBuilder, RejectsDuplicateVerticesAndZeroArea) {
 
 TEST(ModelBuilder, RejectsOverlappingBlocksNamingBoth) {
   CaseSpec c = square_pair();
-  for (Vec2& v : c.blocks[1].polygon.vertices) v.x() -= 0.5;
-  EXPECT_EQ(error_of(c), "2: blocks[1]: overlaps blocks[0] (line 1) (blocks may touch along edges "
-                         "but not overlap)");
+  for (Vec2& v : c.blocks[1].polygon.vertices)
+    v.x() -= 0.5;
+  EXPECT_EQ(error_of(c),
+            "2: blocks[1]: overlaps blocks[0] (line 1) (blocks may touch along edges "
+            "but not overlap)");
 }
 
 TEST(ModelBuilder, RejectsAnUnknownMaterial) {

@@ -59,7 +59,8 @@ inline std::vector<BlockSpec> blocks_of(const std::vector<Polygon>& polygons,
                                         const std::string& material = "rock") {
   std::vector<BlockSpec> blocks;
   for (std::size_t k = 0; k < polygons.size(); ++k)
-    blocks.push_back({polygons[k], material, {static_cast<int>(k) + 1, "blocks[" + std::to_string(k) + "]"}});
+    blocks.push_back(
+        {polygons[k], material, {static_cast<int>(k) + 1, "blocks[" + std::to_string(k) + "]"}});
   return blocks;
 }
 
@@ -82,8 +83,10 @@ inline TractionSpec pressure_on(Vec2 a, Vec2 b, double normal) {
 inline void load_biaxially(CaseSpec& c, double w, double h, double s_x, double s_y) {
   c.supports.push_back(roller({0, 0}, {w, 0}));
   c.supports.push_back(roller({0, 0}, {0, h}));
-  if (s_x != 0.0) c.loads.tractions.push_back(pressure_on({w, 0}, {w, h}, s_x));
-  if (s_y != 0.0) c.loads.tractions.push_back(pressure_on({0, h}, {w, h}, s_y));
+  if (s_x != 0.0)
+    c.loads.tractions.push_back(pressure_on({w, 0}, {w, h}, s_x));
+  if (s_y != 0.0)
+    c.loads.tractions.push_back(pressure_on({0, h}, {w, h}, s_y));
 }
 
 }  // namespace bimrock::testing

@@ -30,7 +30,8 @@ inline std::vector<Polygon> split(const Polygon& poly, const Vec2& p, const Vec2
   // irregular blocks, not degenerate ones.
   const double area = signed_area(poly);
   for (Polygon* q : {&left, &right})
-    if (q->size() < 3 || signed_area(*q) < 0.05 * area) return {poly};
+    if (q->size() < 3 || signed_area(*q) < 0.05 * area)
+      return {poly};
   return {left, right};
 }
 
@@ -51,7 +52,8 @@ inline std::vector<Polygon> irregular_blocks(double w, double h, int n_cuts, uns
         next.push_back(b);
         continue;
       }
-      for (Polygon& part : split(b, p, n)) next.push_back(std::move(part));
+      for (Polygon& part : split(b, p, n))
+        next.push_back(std::move(part));
     }
     blocks = std::move(next);
   }

@@ -13,8 +13,8 @@ namespace bimrock::testing {
 
 struct CommandResult {
   int exit_code = -1;
-  std::string err;  // standard error
-  std::string out;  // standard output
+  std::string err;               // standard error
+  std::string out;               // standard output
   std::filesystem::path folder;  // the temporary folder: case.yaml, results/
 };
 

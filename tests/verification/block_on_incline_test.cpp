@@ -6,7 +6,8 @@
 //  - stable without push when theta < phi, slides when theta > phi;
 //  - force parallel to the slope to push it up:  P = W (sin theta + cos theta tan phi),
 //    to push it down: P = W (cos theta tan phi - sin theta);
-//  - horizontal force to push it up: H = W tan(theta + phi), to pull it down: H = W tan(phi - theta);
+//  - horizontal force to push it up: H = W tan(theta + phi), to pull it down: H = W tan(phi -
+//  theta);
 //  - a block of width b and height h topples when tan theta > b / h (resultant beyond the toe),
 //    1 m x 2.5 m: atan(1 / 2.5) = 21.80 deg (DESIGN.md section 3: end-point yield checks);
 //  - the 3DEC verification set "block on an inclined plane" (b = 10 m, rho = 2000 kg/m^3,
@@ -48,8 +49,9 @@ CaseSpec incline_case(const Incline& in, Vec2 push = Vec2::Zero(), int increment
   s.friction = Softening::constant(std::tan(in.friction_deg * kDeg));
   joint.strength = s;
   c.joint_materials = {joint};
-  c.blocks = testing::blocks_of({Polygon{{{-2, -1}, {in.width + 2, -1}, {in.width + 2, 0}, {-2, 0}}},
-                                 Polygon{{{0, 0}, {in.width, 0}, {in.width, in.height}, {0, in.height}}}});
+  c.blocks =
+      testing::blocks_of({Polygon{{{-2, -1}, {in.width + 2, -1}, {in.width + 2, 0}, {-2, 0}}},
+                          Polygon{{{0, 0}, {in.width, 0}, {in.width, in.height}, {0, in.height}}}});
   c.default_joint = "joint";
   c.supports.push_back(testing::fixed({-2, -1}, {in.width + 2, -1}));
   const double t = in.slope_deg * kDeg;
@@ -75,7 +77,8 @@ PlasticOptions precise() {
 double collapse_force(const Incline& in, Vec2 push) {
   const PlasticResult r = run_plastic_analysis(build_model(incline_case(in, push)), precise());
   EXPECT_TRUE(r.collapse.has_value());
-  if (!r.collapse) return 0.0;
+  if (!r.collapse)
+    return 0.0;
   EXPECT_EQ(r.collapse->stage, 1);
   return 0.5 * (r.collapse->carried + r.collapse->failed) * push.norm();
 }

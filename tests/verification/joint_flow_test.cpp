@@ -35,14 +35,19 @@ CaseSpec sliding_block(const JointStrength& strength, double displacement, int i
   c.monitors.push_back({"P", Vec2(1.0, 0.001), {0, "P"}});
   StageSpec gravity{"gravity", {}, 1, std::nullopt, {0, "gravity"}};
   gravity.loads.gravity = Vec2(0, -1);
-  StageSpec push{"push", {}, increments, DisplacementControlSpec{"P", Vec2(1, 0), displacement, {}},
+  StageSpec push{"push",
+                 {},
+                 increments,
+                 DisplacementControlSpec{"P", Vec2(1, 0), displacement, {}},
                  {0, "push"}};
   push.loads.points.push_back({Vec2(1.0, 0.001), Vec2(1.0, 0.0), {0, "H"}});  // 1 N reference
   c.stages = {gravity, push};
   return c;
 }
 
-Vec2 final_displacement(const PlasticResult& r) { return r.history.back().monitors[0]; }
+Vec2 final_displacement(const PlasticResult& r) {
+  return r.history.back().monitors[0];
+}
 
 TEST(JointFlow, DilationLiftsTheBlockByTanPsiPerUnitSlip) {
   const double slide = 0.01;
@@ -68,7 +73,8 @@ TEST(JointFlow, DilationDoesNotChangeTheSlidingForce) {
     s.friction = Softening::constant(std::tan(30.0 * M_PI / 180.0));
     s.dilation = std::tan(psi_deg * M_PI / 180.0);
     const PlasticResult r = run_plastic_analysis(build_model(sliding_block(s, 0.01, 10)));
-    EXPECT_NEAR(r.history.back().stage_factor, weight * std::tan(30.0 * M_PI / 180.0), 1e-6 * weight);
+    EXPECT_NEAR(r.history.back().stage_factor, weight * std::tan(30.0 * M_PI / 180.0),
+                1e-6 * weight);
   }
 }
 
@@ -84,7 +90,8 @@ TEST(JointFlow, SofteningCohesionGivesAPeakThenTheResidualStrength) {
   ASSERT_FALSE(r.collapse.has_value());
   double peak = 0.0;
   for (const IncrementRecord& rec : r.history) {
-    if (rec.stage != 1) continue;
+    if (rec.stage != 1)
+      continue;
     const double slip = rec.monitors[0].x();  // elastic part ~1e-8 m
     const double c = slip >= s_r ? c_res : c_peak + (c_res - c_peak) * slip / s_r;
     EXPECT_NEAR(rec.stage_factor, c * kLength, 1e-4 * c_peak * kLength) << "slip " << slip;

@@ -8,7 +8,8 @@
 //  - Hand derivation for the continuous direction (horizontal, across the continuous vertical
 //    joints): a uniform stress sigma2 is an exact solution, each column strains by
 //    (1 - nu^2)/E sigma2 and each of the n - 1 vertical joints opens by sigma2 / k_n, so
-//    eps2 = sigma2 [(1 - nu^2)/E + (n - 1)/(n s k_n)] and eps1 = -nu (1 + nu)/E sigma2 (plane strain).
+//    eps2 = sigma2 [(1 - nu^2)/E + (n - 1)/(n s k_n)] and eps1 = -nu (1 + nu)/E sigma2 (plane
+//    strain).
 //
 // Geometry (the paper's figure is lost; examples/jointed_rock_mass/README.md explains the
 // reconstruction): square blocks s = 0.2 m, vertical joints continuous, horizontal joints of
@@ -101,13 +102,14 @@ TEST(JointedRockMass, ExtrapolatedMeanStrainsMatchTable2Within0_5Percent) {
   // Richardson extrapolation of f(n) = L + a / n from n = 40 and 80: L = 2 f(80) - f(40).
   double limit[3][2];
   for (int c = 0; c < 3; ++c)
-    for (int d = 0; d < 2; ++d) limit[c][d] = 2.0 * eps[3][c][d] - eps[2][c][d];
+    for (int d = 0; d < 2; ++d)
+      limit[c][d] = 2.0 * eps[3][c][d] - eps[2][c][d];
   std::printf("%6s %10.5f %10.5f %10.5f %10.5f %10.5f %10.5f\n", "limit", limit[0][0] * 1e4,
               limit[1][0] * 1e4, limit[2][0] * 1e4, limit[0][1] * 1e4, limit[1][1] * 1e4,
               limit[2][1] * 1e4);
-  std::printf("%6s %10.5f %10.5f %10.5f %10.5f %10.5f %10.5f\n", "paper", kCases[0].paper_eps1 * 1e4,
-              kCases[1].paper_eps1 * 1e4, kCases[2].paper_eps1 * 1e4, kCases[0].paper_eps2 * 1e4,
-              kCases[1].paper_eps2 * 1e4, kCases[2].paper_eps2 * 1e4);
+  std::printf("%6s %10.5f %10.5f %10.5f %10.5f %10.5f %10.5f\n", "paper",
+              kCases[0].paper_eps1 * 1e4, kCases[1].paper_eps1 * 1e4, kCases[2].paper_eps1 * 1e4,
+              kCases[0].paper_eps2 * 1e4, kCases[1].paper_eps2 * 1e4, kCases[2].paper_eps2 * 1e4);
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(limit[c][0], kCases[c].paper_eps1, 5e-3 * std::abs(kCases[c].paper_eps1)) << c;
     EXPECT_NEAR(limit[c][1], kCases[c].paper_eps2, 5e-3 * std::abs(kCases[c].paper_eps2)) << c;

@@ -66,7 +66,8 @@ ModelLcp increment_lcp(const Model& m, double pull, std::vector<int> candidates)
       {find_block_containing(m, Vec2(5.999, 0.75)), Vec2(6.0, 0.75), Vec2(pull, 0.0)});
   const Eigen::VectorXd x = ldlt.solve(assemble_loads(m, loads));
   ModelLcp out;
-  out.problem.m = Eigen::MatrixXd(sys.n) - Eigen::MatrixXd(sys.c) * ldlt.solve(Eigen::MatrixXd(sys.phi));
+  out.problem.m =
+      Eigen::MatrixXd(sys.n) - Eigen::MatrixXd(sys.c) * ldlt.solve(Eigen::MatrixXd(sys.phi));
   out.problem.q = -sys.f0 - sys.c * x;
   out.rows = sys.size();
   return out;

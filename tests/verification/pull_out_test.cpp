@@ -38,7 +38,8 @@ CaseSpec pull_out_case(double increment_kn) {
   StageSpec gravity{"gravity", {}, 1, std::nullopt, {0, "gravity"}};
   gravity.loads.gravity = Vec2(0, -1);
   const double total = 60e3;
-  StageSpec pull{"pull", {}, static_cast<int>(total / (increment_kn * 1e3) + 0.5), std::nullopt, {0, "pull"}};
+  StageSpec pull{
+      "pull", {}, static_cast<int>(total / (increment_kn * 1e3) + 0.5), std::nullopt, {0, "pull"}};
   pull.loads.points.push_back({Vec2(6.0, 0.75), Vec2(total, 0.0), {0, "P"}});
   c.stages = {gravity, pull};
   c.monitors.push_back({"A", Vec2(6.0, 0.75), {0, "A"}});

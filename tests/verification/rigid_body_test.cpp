@@ -70,7 +70,8 @@ TEST_P(StiffnessProperties, FreeConnectedAssemblyHasThreeRigidModes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(RandomAssemblies, StiffnessProperties,
-                         ::testing::Combine(::testing::Values(Integration::lobatto, Integration::gauss),
+                         ::testing::Combine(::testing::Values(Integration::lobatto,
+                                                              Integration::gauss),
                                             ::testing::Values(1u, 2u, 3u)));
 
 TEST(InterfaceKinematics, BMatchesTheJumpOfTheTwoBlockDisplacements) {

@@ -18,7 +18,8 @@ class LowerAssembler {
  public:
   LowerAssembler(const Model& model, SparseMatrix& k) : neighbours_(model.n_blocks()), k_(k) {
     for (const Interface& f : model.interfaces) {
-      if (f.is_support()) continue;
+      if (f.is_support())
+        continue;
       const int lo = std::min(f.block_i, f.block_j);
       const int hi = std::max(f.block_i, f.block_j);
       neighbours_[lo].push_back(hi);
@@ -41,9 +42,11 @@ class LowerAssembler {
       for (int a = 0; a < 6; ++a) {
         const std::int64_t c = 6 * b + a;
         outer[c] = next;
-        for (std::int64_t r = c; r < 6 * b + 6; ++r) inner[next++] = r;
+        for (std::int64_t r = c; r < 6 * b + 6; ++r)
+          inner[next++] = r;
         for (int j : neighbours_[b])
-          for (int d = 0; d < 6; ++d) inner[next++] = 6 * j + d;
+          for (int d = 0; d < 6; ++d)
+            inner[next++] = 6 * j + d;
       }
     }
     outer[n] = next;
@@ -57,7 +60,8 @@ class LowerAssembler {
       const std::int64_t gc = 6 * ids[c / 6] + c % 6;
       for (int r = 0; r < N; ++r) {
         const std::int64_t gr = 6 * ids[r / 6] + r % 6;
-        if (gr >= gc) k_.valuePtr()[position(gr, gc)] += local(r, c);
+        if (gr >= gc)
+          k_.valuePtr()[position(gr, gc)] += local(r, c);
       }
     }
   }
@@ -121,13 +125,15 @@ Eigen::VectorXd assemble_loads(const Model& model, const Loads& loads) {
     }
   }
   for (const PointLoad& l : loads.points) {
-    p.segment<6>(6 * l.block) += block_Q(model.blocks[l.block].centroid, l.point).transpose() * l.force;
+    p.segment<6>(6 * l.block) +=
+        block_Q(model.blocks[l.block].centroid, l.point).transpose() * l.force;
   }
   for (const Traction& tr : loads.tractions) {
     const Vec2 traction = tr.normal * tr.outward_normal + tr.shear * perp(tr.outward_normal);
     for (const IntegrationPoint& ip : integration_points(tr.segment, Integration::gauss)) {
-      p.segment<6>(6 * tr.block) +=
-          (t * ip.weight) * block_Q(model.blocks[tr.block].centroid, ip.point).transpose() * traction;
+      p.segment<6>(6 * tr.block) += (t * ip.weight) *
+                                    block_Q(model.blocks[tr.block].centroid, ip.point).transpose() *
+                                    traction;
     }
   }
   return p;

@@ -32,7 +32,8 @@ Eigen::MatrixXd local_stiffness(const Model& model, const YieldPoint& p) {
 Eigen::VectorXd local_strain(const Model& model, const YieldPoint& p, const Eigen::VectorXd& u) {
   const LocalOperator op = local_operator(model, p);
   Eigen::VectorXd x(6 * op.n_blocks());
-  for (int k = 0; k < op.n_blocks(); ++k) x.segment<6>(6 * k) = u.segment<6>(6 * op.blocks[k]);
+  for (int k = 0; k < op.n_blocks(); ++k)
+    x.segment<6>(6 * k) = u.segment<6>(6 * op.blocks[k]);
   return op.e * x;
 }
 
@@ -43,8 +44,11 @@ Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const Plas
 }
 
 ModeKind mode_kind(const YieldPoint& p, int mode) {
-  if (!p.is_interface()) return ModeKind::block_facet;
-  return mode == 0 ? ModeKind::slip_positive : mode == 1 ? ModeKind::slip_negative : ModeKind::opening;
+  if (!p.is_interface())
+    return ModeKind::block_facet;
+  return mode == 0   ? ModeKind::slip_positive
+         : mode == 1 ? ModeKind::slip_negative
+                     : ModeKind::opening;
 }
 
 namespace {
@@ -67,7 +71,8 @@ LocalYield joint_modes(const JointStrength& law, const PlasticState& s, const Ei
   y.h = Eigen::MatrixXd::Zero(3, 3);
   const double slip_h = law.cohesion.slope(s.slip) - sigma_n * law.friction.slope(s.slip);
   y.h.topLeftCorner<2, 2>().setConstant(slip_h);
-  if (s.gap >= s.max_gap) y.h(2, 2) = law.tensile.slope(s.max_gap);
+  if (s.gap >= s.max_gap)
+    y.h(2, 2) = law.tensile.slope(s.max_gap);
   return y;
 }
 
@@ -99,7 +104,8 @@ LocalYield block_modes(const BlockStrength& law, const Eigen::VectorXd& sigma) {
 
 LocalYield linearize(const Model& model, const YieldPoint& p, const PlasticState& s,
                      const Eigen::VectorXd& stress) {
-  if (p.is_interface()) return joint_modes(*model.joint_materials[p.material].strength, s, stress);
+  if (p.is_interface())
+    return joint_modes(*model.joint_materials[p.material].strength, s, stress);
   return block_modes(*model.block_materials[p.material].strength, stress);
 }
 

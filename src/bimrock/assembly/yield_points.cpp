@@ -19,7 +19,8 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
   const double snap = std::max(model.tolerance, 1e-300);
   for (int k = 0; k < model.n_interfaces(); ++k) {
     const Interface& f = model.interfaces[k];
-    if (f.joint_material < 0 || !model.joint_materials[f.joint_material].strength) continue;
+    if (f.joint_material < 0 || !model.joint_materials[f.joint_material].strength)
+      continue;
     const auto ips = integration_points(f.segment, f.integration);
     for (std::size_t end = 0; end < ips.size(); ++end) {
       const IntegrationPoint& ip = ips[end];
@@ -28,19 +29,23 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
       auto it = seen.find(key);
       if (it != seen.end() && f.integration == Integration::lobatto) {
         points[it->second].weight += t * ip.weight;
-        if (index) index->interface_points[k][end] = static_cast<int>(it->second);
+        if (index)
+          index->interface_points[k][end] = static_cast<int>(it->second);
         continue;
       }
       seen[key] = points.size();
-      if (index) index->interface_points[k][end] = static_cast<int>(points.size());
+      if (index)
+        index->interface_points[k][end] = static_cast<int>(points.size());
       points.push_back({YieldPoint::Kind::interface, k, f.block_i, f.block_j, ip.point, f.normal,
                         t * ip.weight, f.joint_material});
     }
   }
   for (int b = 0; b < model.n_blocks(); ++b) {
     const Block& block = model.blocks[b];
-    if (!model.block_materials[block.material].strength) continue;
-    if (index) index->block_points[b] = static_cast<int>(points.size());
+    if (!model.block_materials[block.material].strength)
+      continue;
+    if (index)
+      index->block_points[b] = static_cast<int>(points.size());
     points.push_back({YieldPoint::Kind::block, b, b, kGround, block.centroid, Vec2::Zero(),
                       t * block.area, block.material});
   }
@@ -48,7 +53,8 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
 }
 
 int n_modes(const Model& model, const YieldPoint& p) {
-  if (p.is_interface()) return 3;
+  if (p.is_interface())
+    return 3;
   return model.block_materials[p.material].strength->planes;
 }
 

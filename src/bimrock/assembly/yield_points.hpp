@@ -17,9 +17,9 @@ struct YieldPoint {
   int block_i = 0;
   int block_j = kGround;  ///< interfaces only
   Vec2 position;
-  Vec2 normal;           ///< interfaces only, from i into j
-  double weight = 0.0;   ///< t * length share [m^2] for interfaces, t * area [m^3] for blocks
-  int material = 0;      ///< joint or block material index
+  Vec2 normal;          ///< interfaces only, from i into j
+  double weight = 0.0;  ///< t * length share [m^2] for interfaces, t * area [m^3] for blocks
+  int material = 0;     ///< joint or block material index
 
   [[nodiscard]] bool is_interface() const { return kind == Kind::interface; }
 };
@@ -27,7 +27,7 @@ struct YieldPoint {
 /// Which yield point stands at each interface integration point and each block (-1: none).
 struct YieldPointIndex {
   std::vector<std::array<int, 2>> interface_points;  ///< per interface, per integration point
-  std::vector<int> block_points;                      ///< per block
+  std::vector<int> block_points;                     ///< per block
 };
 
 /// @param index if given, filled with where each point stands

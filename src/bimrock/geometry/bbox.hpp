@@ -31,7 +31,8 @@ struct BBox {
 
 inline BBox bbox_of(std::span<const Vec2> points) {
   BBox b;
-  for (const Vec2& p : points) b.add(p);
+  for (const Vec2& p : points)
+    b.add(p);
   return b;
 }
 

@@ -9,7 +9,8 @@ double signed_area(const Polygon& p) {
   const Vec2 o = p.vertices.front();
   double twice = 0.0;
   const std::size_t n = p.size();
-  for (std::size_t k = 1; k + 1 < n; ++k) twice += cross(p.vertices[k] - o, p.vertices[k + 1] - o);
+  for (std::size_t k = 1; k + 1 < n; ++k)
+    twice += cross(p.vertices[k] - o, p.vertices[k + 1] - o);
   return 0.5 * twice;
 }
 
@@ -29,7 +30,9 @@ Vec2 centroid(const Polygon& p) {
   return o + sum / (3.0 * twice_area);
 }
 
-BBox bbox_of(const Polygon& p) { return bbox_of(std::span<const Vec2>(p.vertices)); }
+BBox bbox_of(const Polygon& p) {
+  return bbox_of(std::span<const Vec2>(p.vertices));
+}
 
 Vec2 outward_normal(const Polygon& p, std::size_t k) {
   const Segment e = p.edge(k);
@@ -39,27 +42,32 @@ Vec2 outward_normal(const Polygon& p, std::size_t k) {
 
 bool contains(const Polygon& poly, const Vec2& p, double tol) {
   for (std::size_t k = 0; k < poly.size(); ++k) {
-    if (outward_normal(poly, k).dot(p - poly.vertices[k]) > tol) return false;
+    if (outward_normal(poly, k).dot(p - poly.vertices[k]) > tol)
+      return false;
   }
   return true;
 }
 
 PolygonCheck check_convex_polygon(const Polygon& p, double tol) {
   const std::size_t n = p.size();
-  if (n < 3) return {PolygonDefect::too_few_vertices, 0};
+  if (n < 3)
+    return {PolygonDefect::too_few_vertices, 0};
   for (std::size_t k = 0; k < n; ++k) {
     if (!std::isfinite(p.vertices[k].x()) || !std::isfinite(p.vertices[k].y()))
       return {PolygonDefect::not_finite, k};
   }
   for (std::size_t k = 0; k < n; ++k) {
     for (std::size_t m = k + 1; m < n; ++m) {
-      if ((p.vertices[k] - p.vertices[m]).norm() <= tol) return {PolygonDefect::duplicate_vertex, m};
+      if ((p.vertices[k] - p.vertices[m]).norm() <= tol)
+        return {PolygonDefect::duplicate_vertex, m};
     }
   }
   const double area = signed_area(p);
   BBox box = bbox_of(p);
-  if (std::abs(area) <= tol * box.diagonal()) return {PolygonDefect::zero_area, 0};
-  if (area < 0.0) return {PolygonDefect::clockwise, 0};
+  if (std::abs(area) <= tol * box.diagonal())
+    return {PolygonDefect::zero_area, 0};
+  if (area < 0.0)
+    return {PolygonDefect::clockwise, 0};
   // Convex: every vertex lies on or left of the line through its two neighbours' edges.
   for (std::size_t k = 0; k < n; ++k) {
     const Vec2& prev = p.vertices[(k + n - 1) % n];
@@ -68,7 +76,8 @@ PolygonCheck check_convex_polygon(const Polygon& p, double tol) {
     const Vec2 d = next - prev;
     // A convex vertex lies right of the chord prev->next (negative distance); reflex when left.
     const double dist = cross(d, cur - prev) / d.norm();
-    if (dist > tol) return {PolygonDefect::non_convex, k};
+    if (dist > tol)
+      return {PolygonDefect::non_convex, k};
   }
   // A polygon that winds more than once (a star) passes the local test: count the turning.
   double turning = 0.0;
@@ -77,7 +86,8 @@ PolygonCheck check_convex_polygon(const Polygon& p, double tol) {
     const Vec2 b = p.vertices[(k + 2) % n] - p.vertices[(k + 1) % n];
     turning += std::atan2(cross(a, b), a.dot(b));
   }
-  if (std::abs(turning - 2.0 * M_PI) > 1e-6) return {PolygonDefect::non_convex, 0};
+  if (std::abs(turning - 2.0 * M_PI) > 1e-6)
+    return {PolygonDefect::non_convex, 0};
   return {};
 }
 
@@ -102,6 +112,8 @@ std::string describe(const PolygonCheck& c) {
   return "unknown defect";
 }
 
-double model_tolerance(const BBox& model_box) { return 1e-9 * model_box.diagonal(); }
+double model_tolerance(const BBox& model_box) {
+  return 1e-9 * model_box.diagonal();
+}
 
 }  // namespace bimrock

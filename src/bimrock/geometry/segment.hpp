@@ -28,7 +28,8 @@ inline double distance_to_line(const Segment& s, const Vec2& p) {
 inline double distance_to_segment(const Segment& s, const Vec2& p) {
   const Vec2 d = s.b - s.a;
   const double l2 = d.squaredNorm();
-  if (l2 == 0.0) return (p - s.a).norm();
+  if (l2 == 0.0)
+    return (p - s.a).norm();
   const double t = std::clamp((p - s.a).dot(d) / l2, 0.0, 1.0);
   return (p - s.at(t)).norm();
 }

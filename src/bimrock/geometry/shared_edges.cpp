@@ -10,7 +10,7 @@ namespace bimrock {
 namespace {
 
 using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t,
-                                                       CGAL::Box_intersection_d::ID_EXPLICIT>;
+                                                        CGAL::Box_intersection_d::ID_EXPLICIT>;
 
 // Overlap of edge a (of polygon i) with edge b (of polygon j): the part of a that b covers, as a
 // parameter interval [t0, t1] along a. Empty when the edges are not anti-parallel and collinear.
@@ -19,13 +19,16 @@ bool collinear_overlap(const Segment& a, const Segment& b, double tol, double& t
   const double la = da.norm();
   const Vec2 ua = da / la;
   const Vec2 db = b.b - b.a;
-  if (ua.dot(db) >= 0.0) return false;  // neighbours traverse a shared edge in opposite senses
-  if (std::abs(cross(ua, b.a - a.a)) > tol || std::abs(cross(ua, b.b - a.a)) > tol) return false;
+  if (ua.dot(db) >= 0.0)
+    return false;  // neighbours traverse a shared edge in opposite senses
+  if (std::abs(cross(ua, b.a - a.a)) > tol || std::abs(cross(ua, b.b - a.a)) > tol)
+    return false;
   const double sb0 = ua.dot(b.a - a.a);
   const double sb1 = ua.dot(b.b - a.a);
   const double s0 = std::max(0.0, std::min(sb0, sb1));
   const double s1 = std::min(la, std::max(sb0, sb1));
-  if (s1 - s0 <= tol) return false;
+  if (s1 - s0 <= tol)
+    return false;
   t0 = s0 / la;
   t1 = s1 / la;
   return true;
@@ -66,8 +69,13 @@ std::vector<SharedEdge> find_shared_edges(std::span<const Polygon> polygons, dou
       for (std::size_t ej = 0; ej < pj.size(); ++ej) {
         double t0 = 0.0;
         double t1 = 0.0;
-        if (!collinear_overlap(a, pj.edge(ej), tol, t0, t1)) continue;
-        shared.push_back({i, j, static_cast<int>(ei), static_cast<int>(ej), {a.at(t0), a.at(t1)},
+        if (!collinear_overlap(a, pj.edge(ej), tol, t0, t1))
+          continue;
+        shared.push_back({i,
+                          j,
+                          static_cast<int>(ei),
+                          static_cast<int>(ej),
+                          {a.at(t0), a.at(t1)},
                           outward_normal(pi, ei)});
       }
     }
@@ -79,14 +87,16 @@ std::vector<BoundaryEdge> find_boundary_edges(std::span<const Polygon> polygons,
                                               std::span<const SharedEdge> shared, double tol) {
   // Covered parameter intervals per (polygon, edge), from both sides of every shared segment.
   std::vector<std::vector<std::vector<std::pair<double, double>>>> covered(polygons.size());
-  for (std::size_t k = 0; k < polygons.size(); ++k) covered[k].resize(polygons[k].size());
+  for (std::size_t k = 0; k < polygons.size(); ++k)
+    covered[k].resize(polygons[k].size());
   auto cover = [&](int poly, int edge, const Segment& s) {
     const Segment e = polygons[poly].edge(edge);
     const Vec2 d = e.b - e.a;
     const double l2 = d.squaredNorm();
     double t0 = (s.a - e.a).dot(d) / l2;
     double t1 = (s.b - e.a).dot(d) / l2;
-    if (t0 > t1) std::swap(t0, t1);
+    if (t0 > t1)
+      std::swap(t0, t1);
     covered[poly][edge].emplace_back(t0, t1);
   };
   for (const SharedEdge& s : shared) {
@@ -103,12 +113,15 @@ std::vector<BoundaryEdge> find_boundary_edges(std::span<const Polygon> polygons,
       double t = 0.0;
       auto emit = [&](double t_end) {
         if ((t_end - t) * len > tol) {
-          boundary.push_back({static_cast<int>(k), static_cast<int>(e), {edge.at(t), edge.at(t_end)},
+          boundary.push_back({static_cast<int>(k),
+                              static_cast<int>(e),
+                              {edge.at(t), edge.at(t_end)},
                               outward_normal(polygons[k], e)});
         }
       };
       for (const auto& [a, b] : intervals) {
-        if (a > t) emit(a);
+        if (a > t)
+          emit(a);
         t = std::max(t, b);
       }
       emit(1.0);
@@ -124,8 +137,10 @@ std::vector<std::pair<int, int>> find_overlaps(std::span<const Polygon> polygons
       const Vec2 n = outward_normal(p, e);
       const Vec2& o = p.vertices[e];
       double min_q = std::numeric_limits<double>::infinity();
-      for (const Vec2& v : q.vertices) min_q = std::min(min_q, n.dot(v - o));
-      if (min_q >= -tol) return true;
+      for (const Vec2& v : q.vertices)
+        min_q = std::min(min_q, n.dot(v - o));
+      if (min_q >= -tol)
+        return true;
     }
     return false;
   };

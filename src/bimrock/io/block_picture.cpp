@@ -24,7 +24,8 @@ struct Frame {
 };
 
 Vec2 moved(const Model& m, int block, const Vec2& p, const Eigen::VectorXd& u, double magnify) {
-  if (u.size() == 0) return p;
+  if (u.size() == 0)
+    return p;
   return p + magnify * (block_Q(m.blocks[block].centroid, p) * u.segment<6>(6 * block));
 }
 
@@ -33,8 +34,10 @@ void polygon_path(cairo_t* cr, const Frame& f, const Model& m, int block, const 
   const auto& v = m.blocks[block].polygon.vertices;
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Vec2 p = moved(m, block, v[k], u, magnify);
-    if (k == 0) cairo_move_to(cr, f.x(p.x()), f.y(p.y()));
-    else cairo_line_to(cr, f.x(p.x()), f.y(p.y()));
+    if (k == 0)
+      cairo_move_to(cr, f.x(p.x()), f.y(p.y()));
+    else
+      cairo_line_to(cr, f.x(p.x()), f.y(p.y()));
   }
   cairo_close_path(cr);
 }
@@ -47,8 +50,10 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
     double largest = 0.0;
     for (int b = 0; b < m.n_blocks(); ++b)
       for (const Vec2& v : m.blocks[b].polygon.vertices)
-        largest = std::max(largest, (block_Q(m.blocks[b].centroid, v) * pic.u.segment<6>(6 * b)).norm());
-    if (largest > 0.0) magnify = pic.displayed_fraction * f.box.diagonal() / largest;
+        largest =
+            std::max(largest, (block_Q(m.blocks[b].centroid, v) * pic.u.segment<6>(6 * b)).norm());
+    if (largest > 0.0)
+      magnify = pic.displayed_fraction * f.box.diagonal() / largest;
   }
   const Eigen::VectorXd none;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
@@ -80,16 +85,26 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
       cairo_stroke(cr);
       continue;
     }
-    if (mark == InterfaceMark::none) continue;
+    if (mark == InterfaceMark::none)
+      continue;
     if (pic.marks.empty() && in.joint_material >= 0 &&
         m.joint_materials[in.joint_material].kind == JointMaterial::Kind::continuum)
       continue;
     const Vec2 a = moved(m, in.block_i, in.segment.a, pic.u, magnify);
     const Vec2 b = moved(m, in.block_i, in.segment.b, pic.u, magnify);
     switch (mark) {
-      case InterfaceMark::slipping: cairo_set_source_rgb(cr, 0.85, 0.1, 0.1); cairo_set_line_width(cr, 3.0); break;
-      case InterfaceMark::opening: cairo_set_source_rgb(cr, 0.1, 0.3, 0.9); cairo_set_line_width(cr, 3.0); break;
-      default: cairo_set_source_rgb(cr, 0.2, 0.2, 0.2); cairo_set_line_width(cr, 1.2); break;
+      case InterfaceMark::slipping:
+        cairo_set_source_rgb(cr, 0.85, 0.1, 0.1);
+        cairo_set_line_width(cr, 3.0);
+        break;
+      case InterfaceMark::opening:
+        cairo_set_source_rgb(cr, 0.1, 0.3, 0.9);
+        cairo_set_line_width(cr, 3.0);
+        break;
+      default:
+        cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+        cairo_set_line_width(cr, 1.2);
+        break;
     }
     cairo_move_to(cr, f.x(a.x()), f.y(a.y()));
     cairo_line_to(cr, f.x(b.x()), f.y(b.y()));
@@ -115,7 +130,8 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
 void write_block_picture(const Model& model, const BlockPicture& pic,
                          const std::filesystem::path& stem) {
   Frame f;
-  for (const Block& b : model.blocks) f.box.add(bbox_of(b.polygon));
+  for (const Block& b : model.blocks)
+    f.box.add(bbox_of(b.polygon));
   const double grow = 0.08 * f.box.diagonal();  // room for the displaced blocks
   f.box.lo -= Vec2(grow, grow);
   f.box.hi += Vec2(grow, grow);
@@ -126,13 +142,15 @@ void write_block_picture(const Model& model, const BlockPicture& pic,
   f.height = height;
   const std::filesystem::path png = stem.string() + ".png";
   const std::filesystem::path svg = stem.string() + ".svg";
-  cairo_surface_t* image = cairo_image_surface_create(CAIRO_FORMAT_RGB24, pic.width_px, int(height));
+  cairo_surface_t* image =
+      cairo_image_surface_create(CAIRO_FORMAT_RGB24, pic.width_px, int(height));
   cairo_t* cr = cairo_create(image);
   draw(cr, model, pic, f, width);
   cairo_destroy(cr);
   const cairo_status_t written = cairo_surface_write_to_png(image, png.c_str());
   cairo_surface_destroy(image);
-  if (written != CAIRO_STATUS_SUCCESS) throw std::runtime_error("cannot write " + png.string());
+  if (written != CAIRO_STATUS_SUCCESS)
+    throw std::runtime_error("cannot write " + png.string());
   cairo_surface_t* vector = cairo_svg_surface_create(svg.c_str(), width, height);
   cr = cairo_create(vector);
   draw(cr, model, pic, f, width);
@@ -140,7 +158,8 @@ void write_block_picture(const Model& model, const BlockPicture& pic,
   cairo_surface_finish(vector);
   const bool ok = cairo_surface_status(vector) == CAIRO_STATUS_SUCCESS;
   cairo_surface_destroy(vector);
-  if (!ok) throw std::runtime_error("cannot write " + svg.string());
+  if (!ok)
+    throw std::runtime_error("cannot write " + svg.string());
 }
 
 }  // namespace bimrock

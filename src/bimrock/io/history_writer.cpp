@@ -32,9 +32,9 @@ void write_history_csv(const Model& model, const PlasticResult& result,
                        r.stage_factor * point_load_resultant(stage));
     for (const Vec2& u : r.monitors)
       out << fmt::format(",{},{}", u.x(), u.y());
-    out << fmt::format(",{},{},{},{},{},{},{},{}\n", r.yielding_points, r.open_points,
-                       r.lcp_size, r.active_set_iterations, r.tangent_factorizations, r.pivots,
-                       r.rounds, r.seconds);
+    out << fmt::format(",{},{},{},{},{},{},{},{}\n", r.yielding_points, r.open_points, r.lcp_size,
+                       r.active_set_iterations, r.tangent_factorizations, r.pivots, r.rounds,
+                       r.seconds);
   }
 }
 

@@ -36,9 +36,11 @@ class InputError : public std::runtime_error {
                             const std::string& message) {
     std::ostringstream s;  // (not operator+: GCC 12 raises a false -Wrestrict on it)
     s << (file.empty() ? std::string("<input>") : file);
-    if (line > 0) s << ':' << line;
+    if (line > 0)
+      s << ':' << line;
     s << ": ";
-    if (!item.empty()) s << item << ": ";
+    if (!item.empty())
+      s << item << ": ";
     s << message;
     return s.str();
   }

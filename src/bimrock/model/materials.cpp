@@ -18,9 +18,9 @@ Eigen::Matrix3d elasticity_matrix(const BlockMaterial& m, PlaneMode plane) {
 
 SpringPair layer_stiffness(double young, double poisson, double thickness, PlaneMode plane) {
   const double shear = young / (2.0 * (1.0 + poisson) * thickness);
-  if (plane == PlaneMode::stress) return {young / ((1.0 - poisson * poisson) * thickness), shear};
-  const double constrained =
-      young * (1.0 - poisson) / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
+  if (plane == PlaneMode::stress)
+    return {young / ((1.0 - poisson * poisson) * thickness), shear};
+  const double constrained = young * (1.0 - poisson) / ((1.0 + poisson) * (1.0 - 2.0 * poisson));
   return {constrained / thickness, shear};
 }
 

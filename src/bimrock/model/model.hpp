@@ -58,9 +58,9 @@ struct Loads {
 };
 
 struct DisplacementControl {
-  int monitor = 0;  ///< index into Model::monitors
+  int monitor = 0;                 ///< index into Model::monitors
   Vec2 direction = Vec2::UnitX();  ///< unit
-  double displacement = 0.0;  ///< total over the stage [m]
+  double displacement = 0.0;       ///< total over the stage [m]
 };
 
 struct Stage {
@@ -84,10 +84,10 @@ struct Model {
   std::vector<BlockMaterial> block_materials;
   std::vector<JointMaterial> joint_materials;
   std::vector<Block> blocks;
-  std::vector<Interface> interfaces;  ///< block-block interfaces first, then supports
+  std::vector<Interface> interfaces;   ///< block-block interfaces first, then supports
   std::vector<BoundaryEdge> boundary;  ///< the outline (supported parts included)
-  Loads loads;  ///< of an elastic analysis
-  std::vector<Stage> stages;  ///< of a nonlinear analysis
+  Loads loads;                         ///< of an elastic analysis
+  std::vector<Stage> stages;           ///< of a nonlinear analysis
   std::vector<Monitor> monitors;
   double tolerance = 0.0;  ///< length tolerance, see model_tolerance()
 

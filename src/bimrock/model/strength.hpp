@@ -15,9 +15,12 @@ struct Softening {
   double residual = 0.0;
   double distance = std::numeric_limits<double>::infinity();
 
-  [[nodiscard]] static Softening constant(double value) { return {value, value, std::numeric_limits<double>::infinity()}; }
+  [[nodiscard]] static Softening constant(double value) {
+    return {value, value, std::numeric_limits<double>::infinity()};
+  }
   [[nodiscard]] double value(double kappa) const {
-    if (kappa >= distance) return residual;
+    if (kappa >= distance)
+      return residual;
     return peak + (residual - peak) * (kappa / distance);
   }
   /// Relative distance to the kink within which kappa counts as having reached it: a step cut
@@ -25,7 +28,8 @@ struct Softening {
   static constexpr double kKinkTolerance = 1e-9;
   /// d value / d kappa at kappa, for the next increment (0 once the residual is reached).
   [[nodiscard]] double slope(double kappa) const {
-    if (kappa >= distance * (1.0 - kKinkTolerance) || !std::isfinite(distance)) return 0.0;
+    if (kappa >= distance * (1.0 - kKinkTolerance) || !std::isfinite(distance))
+      return 0.0;
     return (residual - peak) / distance;
   }
 };
@@ -36,10 +40,10 @@ struct Softening {
 /// along [1, 0] and reversible (the joint closes again, never penetrates; eqs. 31-34).
 /// c and tan(phi) soften with accumulated plastic slip, sigma_t with the largest opening.
 struct JointStrength {
-  Softening cohesion = Softening::constant(0.0);      ///< c [Pa]
-  Softening friction = Softening::constant(0.0);      ///< tan(phi) [-]
-  double dilation = 0.0;                              ///< tan(psi) [-]
-  Softening tensile = Softening::constant(0.0);       ///< sigma_t [Pa]
+  Softening cohesion = Softening::constant(0.0);  ///< c [Pa]
+  Softening friction = Softening::constant(0.0);  ///< tan(phi) [-]
+  double dilation = 0.0;                          ///< tan(psi) [-]
+  Softening tensile = Softening::constant(0.0);   ///< sigma_t [Pa]
 };
 
 /// Yield criterion of a block's mean stress, linearized in plane strain as a polygon of `planes`
