@@ -197,13 +197,12 @@ constexpr double kSmallestDamping = 1e-6;
 // have w_i < 0 and d_i < 0, which only steepens the path. So no active set comes back, where the
 // block rule can swap tens of rows forever near a limit load. A group with more free rows than
 // its rank, or a singular block that is no mechanism, is damped (a proximal step), which keeps
-// the descent.
+// the descent. `at` is the start, z >= 0 measured by problem.result().
 LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& options,
-                           Eigen::VectorXd z, int iteration, bool trace) {
+                           LcpResult at, int iteration, bool trace) {
   const Eigen::Index n = problem.size();
   const Eigen::VectorXd& q = problem.q();
-  z = z.cwiseMax(0.0);
-  LcpResult at = problem.result(LcpStatus::solved, z, iteration);
+  Eigen::VectorXd z = at.z;
   double f = objective(z, at.w, q);
   // Rows the last Newton point took below zero and the step left at zero stay out of the next
   // free set, although w_i < 0 there: else each Newton point asks for them to go negative again
@@ -354,7 +353,8 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
   // objective (z = 0 has 0): near a limit load the last one can be far off (a nearly singular
   // block gave it multipliers of -3e6 at 10^4 blocks).
   const bool newton = options_.projected_newton && problem.symmetric();
-  Eigen::VectorXd best = Eigen::VectorXd::Zero(n);
+  LcpResult best = newton ? problem.result(LcpStatus::solved, Eigen::VectorXd::Zero(n), 0)
+                          : LcpResult();  // measured: no back-solve for z = 0
   double best_objective = 0.0;
   auto after_block_rule = [&](LcpStatus status, int iteration) {
     if (newton)
@@ -396,8 +396,8 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     z = std::move(step.z);
     const Eigen::VectorXd& w = step.w;
     if (newton) {
-      Eigen::VectorXd projected = z.cwiseMax(0.0);
-      const double f = objective(projected, problem.result(LcpStatus::solved, projected, 0).w, q);
+      LcpResult projected = problem.result(LcpStatus::solved, z.cwiseMax(0.0), iteration);
+      const double f = objective(projected.z, projected.w, q);
       if (f < best_objective) {
         best_objective = f;
         best = std::move(projected);
