@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
@@ -74,7 +75,7 @@ Eigen::VectorXd kernel_certificate(const Eigen::MatrixXd& a, const Eigen::Matrix
 
 // The active-set equations of an LCP given column by column: the columns of the active rows
 // are asked for once each (kept for later iterations) and the active block is solved by a
-// dense LU.
+// dense Cholesky (symmetric) or LU.
 class ColumnEquations final : public ActiveSetEquations {
  public:
   ColumnEquations(LcpColumns& problem, double singular_tolerance)
@@ -113,14 +114,28 @@ class ColumnEquations final : public ActiveSetEquations {
     out.z = Eigen::VectorXd::Zero(n);
     Eigen::VectorXd za = Eigen::VectorXd::Zero(k);
     if (k > 0) {
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
-      if (!(lu.rcond() > singular_tolerance_)) {
-        if (problem_.symmetric())
-          out.ray = kernel_certificate(a, m_rows, q(), rows);
-        return out;
+      // One step of iterative refinement after the solve.
+      const auto refined = [&](const auto& factor) {
+        Eigen::VectorXd x = factor.solve(rhs);
+        x += factor.solve(rhs - a * x);
+        return x;
+      };
+      // A symmetric block is positive semi-definite (the LCP is a convex program): Cholesky,
+      // half the work of LU, unless it is singular.
+      const Eigen::LLT<Eigen::MatrixXd> llt =
+          problem_.symmetric() ? Eigen::LLT<Eigen::MatrixXd>(a) : Eigen::LLT<Eigen::MatrixXd>();
+      if (problem_.symmetric() && llt.info() == Eigen::Success &&
+          llt.rcond() > singular_tolerance_) {
+        za = refined(llt);
+      } else {
+        const Eigen::PartialPivLU<Eigen::MatrixXd> lu(a);
+        if (!(lu.rcond() > singular_tolerance_)) {
+          if (problem_.symmetric())
+            out.ray = kernel_certificate(a, m_rows, q(), rows);
+          return out;
+        }
+        za = refined(lu);
       }
-      za = lu.solve(rhs);
-      za += lu.solve(rhs - a * za);  // one step of iterative refinement
       for (Eigen::Index r = 0; r < k; ++r)
         out.z(rows[static_cast<std::size_t>(r)]) = za(r);
     }
