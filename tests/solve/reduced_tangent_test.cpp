@@ -94,7 +94,7 @@ VectorXd dense_solution(const ChainLcp& chain, const std::vector<Eigen::Index>& 
 TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   ChainLcp chain;
   make_chain(40, 7, chain);
-  SparseCholesky tangent;
+  TangentFactor tangent;
   ReducedTangentEquations equations(chain.split, chain.k, tangent);
   std::vector<Eigen::Index> active;
   for (Eigen::Index r = 0; r < equations.size(); r += 3)  // one or both modes of a point
@@ -108,11 +108,38 @@ TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   EXPECT_EQ(equations.factorizations(), 1);
 }
 
+TEST(ReducedTangent, ReusesTheKeptFactorOnlyForTheSameTangent) {
+  // A second LCP (a later candidate round) that starts from the active set the first ended
+  // with: no factorization. Another active set of the same pattern: factorized again. Each
+  // solution is checked against the dense block, so a stale factor would fail.
+  ChainLcp chain;
+  make_chain(30, 9, chain);
+  TangentFactor tangent;
+  std::vector<Eigen::Index> odd, even;
+  for (Eigen::Index r = 0; r < chain.split.q.size(); ++r)
+    (r % 2 ? odd : even).push_back(r);
+  {
+    ReducedTangentEquations first(chain.split, chain.k, tangent);
+    ASSERT_TRUE(first.solve(odd).regular);
+    EXPECT_EQ(first.factorizations(), 1);
+  }
+  ReducedTangentEquations second(chain.split, chain.k, tangent);
+  const ActiveSetEquations::Solution same = second.solve(odd);
+  EXPECT_EQ(second.factorizations(), 0);
+  EXPECT_EQ(second.reused_factors(), 1);
+  const VectorXd z_odd = dense_solution(chain, odd, {});
+  EXPECT_LE((same.z - z_odd).cwiseAbs().maxCoeff(), 1e-9 * z_odd.cwiseAbs().maxCoeff());
+  const ActiveSetEquations::Solution other = second.solve(even);
+  EXPECT_EQ(second.factorizations(), 1);
+  const VectorXd z_even = dense_solution(chain, even, {});
+  EXPECT_LE((other.z - z_even).cwiseAbs().maxCoeff(), 1e-9 * z_even.cwiseAbs().maxCoeff());
+}
+
 TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {
   // The proximal equations of projected Newton.
   ChainLcp chain;
   make_chain(40, 5, chain);
-  SparseCholesky tangent;
+  TangentFactor tangent;
   ReducedTangentEquations equations(chain.split, chain.k, tangent);
   std::vector<Eigen::Index> active;
   for (Eigen::Index r = 0; r < equations.size(); r += 2)
@@ -136,7 +163,7 @@ TEST(ReducedTangent, ActiveSetOnTheTangentAgreesWithLemkeOnTheDenseMatrix) {
     make_chain(60, seed, chain);
     const LcpResult lemke = Lemke().solve({chain.m_dense, chain.split.q});
     ASSERT_EQ(lemke.status, LcpStatus::solved);
-    SparseCholesky tangent;
+    TangentFactor tangent;
     ReducedTangentEquations equations(chain.split, chain.k, tangent);
     const LcpResult r = ActiveSetLcp().solve(equations);
     ASSERT_EQ(r.status, LcpStatus::solved) << to_string(r.status) << " seed " << seed;
@@ -160,7 +187,7 @@ TEST(ReducedTangent, ASingularLocalBlockIsLeftToTheDenseRoute) {
   MatrixXd n = MatrixXd(chain.n);
   n.block(4, 4, 2, 2) = MatrixXd::Ones(2, 2);
   chain.n = n.sparseView();
-  SparseCholesky tangent;
+  TangentFactor tangent;
   ReducedTangentEquations equations(chain.split, chain.k, tangent);
   const ActiveSetEquations::Solution s = equations.solve({4, 5});
   EXPECT_FALSE(s.regular);

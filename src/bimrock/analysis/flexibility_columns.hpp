@@ -30,6 +30,9 @@ class FlexibilityColumns {
   /// sum_r y_r v_r = K^-1 Phi v, by one back-solve (no column is formed or kept).
   [[nodiscard]] Eigen::VectorXd combine(const YieldSystem& sys, const Eigen::VectorXd& v);
 
+  /// Drops every column kept (their memory is returned).
+  void clear() { cache_ = {}; }
+
   [[nodiscard]] std::int64_t solved_columns() const { return solved_; }
   [[nodiscard]] double seconds() const { return seconds_; }
 

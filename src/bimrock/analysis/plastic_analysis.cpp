@@ -32,7 +32,7 @@ struct LcpSolvers {
   ActiveSetLcp active_set;
   Lemke lemke;
   FlexibilityColumns columns;                 // K^-1 phi_r of the rows that were ever active
-  SparseCholesky tangent;                     // the reduced tangent (its analysis is kept)
+  TangentFactor tangent;                      // the reduced tangent (analysis and last factor)
   std::set<std::pair<int, int>> last_active;  // (point, mode) yielding in the last increment
 };
 
@@ -217,17 +217,18 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   const Eigen::VectorXd du_elastic = control
                                          ? Eigen::VectorXd((step / ctx.control_rate) * ctx.x_ref)
                                          : Eigen::VectorXd(step * ctx.x_ref);
-  // select_candidate_rows: open points, and points whose elastic predictor reaches yield by
-  // more than the tolerance of the final check (a joint that sits exactly on its tension
+  // select_candidate_rows: open points, and points whose elastic predictor reaches yield (by
+  // more than the tolerance of the final check: a joint that sits exactly on its tension
   // cut-off, as the vertical joints of a free-standing wall do, is not a candidate for the
-  // round-off of its stress).
+  // round-off of its stress) or comes within the candidate margin of it.
   std::vector<double> predicted_f(ctx.points.size());
   double scale = 0.0;
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
     const YieldPoint& point = ctx.points[p];
     const Eigen::VectorXd stress = local_stress(model, point, s.points[p], s.u);
     const LocalYield y = linearize(model, point, s.points[p], stress);
-    predicted_f[p] = (y.f + y.a * local_of(model, point, du_elastic)).maxCoeff();
+    const Eigen::VectorXd df = y.a * local_of(model, point, du_elastic);
+    predicted_f[p] = (y.f + df + opt.candidate_margin * df.cwiseAbs()).maxCoeff();
     scale =
         std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
   }
@@ -291,6 +292,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
                                  warm.sum() >= opt.reduced_tangent_rows && lcp.symmetric();
       if (tangent_route) {
         // Many rows active: the equations of each active set on the sparse reduced tangent.
+        // It reads no column of K^-1 Phi: those kept go, to make room for its factor (they
+        // are formed again if the dense route is ever needed).
+        solvers.columns.clear();
         SplitLcp split{&ctx.k_lower, &sys.c, &sys.phi, &sys.n, lcp.q(), {}, {}};
         for (int i = 0; i < m; ++i) {
           split.group.push_back(lcp.group(i));

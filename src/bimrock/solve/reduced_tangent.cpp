@@ -1,5 +1,6 @@
 #include <bimrock/solve/reduced_tangent.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -55,7 +56,8 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
     for (Eigen::Index j = 0; j < n; ++j)
       shifted.coeffRef(j, j) += shift * d(j);
     ++factorizations_;
-    factorized = tangent_.factorize(shifted);
+    tangent_.factored = CholmodMatrix();  // the factor is of the shifted matrix
+    factorized = tangent_.cholesky.factorize(shifted);
     if (factorized)
       break;
   }
@@ -65,7 +67,7 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
   for (Eigen::Index i = 0; i < n; ++i)
     v(i) = 1.0 + 0.5 * std::sin(static_cast<double>(i));  // any start not orthogonal to it
   for (int it = 0; it < kInverseIterations; ++it) {
-    v = tangent_.solve(Eigen::VectorXd(d.asDiagonal() * v));
+    v = tangent_.cholesky.solve(Eigen::VectorXd(d.asDiagonal() * v));
     v /= v.norm();
   }
   Eigen::VectorXd r = Eigen::VectorXd::Zero(size());
@@ -90,8 +92,35 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
 }
 
 ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k,
-                                                 SparseCholesky& tangent)
+                                                 TangentFactor& tangent)
     : lcp_(lcp), k_(k), tangent_(tangent), c_transposed_(lcp.c->transpose()) {}
+
+bool ReducedTangentEquations::factorize(const CholmodMatrix& tangent) {
+  const CholmodMatrix& kept = tangent_.factored;
+  const auto same = [](const auto* a, const auto* b, Eigen::Index size) {
+    return std::equal(a, a + size, b);
+  };
+  if (tangent_.cholesky.factorized() && kept.nonZeros() == tangent.nonZeros() &&
+      kept.rows() == tangent.rows() &&
+      same(kept.outerIndexPtr(), tangent.outerIndexPtr(), tangent.cols() + 1) &&
+      same(kept.innerIndexPtr(), tangent.innerIndexPtr(), tangent.nonZeros()) &&
+      same(kept.valuePtr(), tangent.valuePtr(), tangent.nonZeros())) {
+    ++reused_;
+    return true;
+  }
+  // The tangent has K's pattern whenever each yield point couples blocks K couples; else
+  // (never in the analysis) it is analyzed for its own pattern.
+  if (tangent.nonZeros() != tangent_.cholesky.analyzed_nonzeros() ||
+      tangent.nonZeros() != lcp_.k_lower->nonZeros())
+    tangent_.cholesky.analyze(tangent, 6);
+  ++factorizations_;
+  if (!tangent_.cholesky.factorize(tangent)) {
+    tangent_.factored = CholmodMatrix();
+    return false;
+  }
+  tangent_.factored = tangent;
+  return true;
+}
 
 ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Eigen::Index>& active,
                                                             const Damping& damping) {
@@ -146,15 +175,7 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Ei
   CholmodMatrix plastic_lower(n, n);
   plastic_lower.setFromTriplets(plastic.begin(), plastic.end());
   const CholmodMatrix tangent = *lcp_.k_lower - plastic_lower;
-
-  // The tangent has K's pattern whenever each yield point couples blocks K couples; else
-  // (never in the analysis) it is analyzed for its own pattern.
-  if (tangent.nonZeros() != tangent_.analyzed_nonzeros() ||
-      tangent.nonZeros() != lcp_.k_lower->nonZeros())
-    tangent_.analyze(tangent, 6);
-  const bool positive_definite = tangent_.factorize(tangent);
-  ++factorizations_;
-  if (!positive_definite) {
+  if (!factorize(tangent)) {
     out.ray = mechanism(tangent, active, locals);
     return out;
   }
@@ -176,7 +197,7 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Ei
           rhs(p.row()) -= p.value() * nv(i);
       t[g] = std::move(v_local);
     }
-    const Eigen::VectorXd x = tangent_.solve(rhs);
+    const Eigen::VectorXd x = tangent_.cholesky.solve(rhs);
     for (std::size_t g = 0; g < locals.size(); ++g) {
       const Local& l = locals[g];
       const Eigen::VectorXd z_local = l.inverse * (strain(active, l, x) - t[g]);

@@ -37,12 +37,19 @@ struct SplitLcp {
   std::vector<int> group_rank;             ///< per row: independent rows of its group at most
 };
 
+/// The factor of the reduced tangent, kept from one LCP to the next: its symbolic analysis
+/// serves every active set, and its numeric factor the next LCP that asks for the same tangent
+/// (each candidate round starts from the active set the last round ended with).
+struct TangentFactor {
+  SparseCholesky cholesky;
+  CholmodMatrix factored;  ///< the tangent `cholesky` holds the factor of (empty: none)
+};
+
 class ReducedTangentEquations final : public ActiveSetEquations {
  public:
   /// @param k the factor of K (to measure results)
-  /// @param tangent a factor object that keeps its symbolic analysis from one call to the next
-  ///        (analyzed here when its pattern is not the tangent's)
-  ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k, SparseCholesky& tangent);
+  /// @param tangent analyzed here when its pattern is not the tangent's
+  ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k, TangentFactor& tangent);
 
   [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return lcp_.q; }
@@ -59,22 +66,27 @@ class ReducedTangentEquations final : public ActiveSetEquations {
                                const Damping& damping) override;
   [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
 
-  /// Numeric factorizations of the tangent so far.
+  /// Numeric factorizations of the tangent so far, and the solves that reused a factor.
   [[nodiscard]] int factorizations() const { return factorizations_; }
+  [[nodiscard]] int reused_factors() const { return reused_; }
 
  private:
   struct Local;
   [[nodiscard]] Eigen::VectorXd strain(const std::vector<Eigen::Index>& active, const Local& l,
                                        const Eigen::VectorXd& x) const;
+  /// Factorizes `tangent` unless the factor kept is of the same matrix; false if it is not
+  /// positive definite.
+  [[nodiscard]] bool factorize(const CholmodMatrix& tangent);
   [[nodiscard]] Eigen::VectorXd mechanism(const CholmodMatrix& tangent,
                                           const std::vector<Eigen::Index>& active,
                                           const std::vector<Local>& locals);
 
   const SplitLcp& lcp_;
   const SparseCholesky& k_;
-  SparseCholesky& tangent_;
+  TangentFactor& tangent_;
   CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
   int factorizations_ = 0;
+  int reused_ = 0;
 };
 
 }  // namespace bimrock
