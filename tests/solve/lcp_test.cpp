@@ -1,9 +1,11 @@
-// The LCP data object and its residuals. Expected numbers are worked by hand.
+// The LCP data object, its residuals and the reach of an infeasibility certificate. Expected
+// numbers are worked by hand (and the certificate's reach is checked with Lemke as well).
 #include <sstream>
 
 #include <gtest/gtest.h>
 
 #include <bimrock/solve/lcp.hpp>
+#include <bimrock/solve/lemke.hpp>
 
 namespace bimrock {
 namespace {
@@ -66,6 +68,25 @@ TEST(LcpProblem, ReadingATruncatedStreamThrows) {
 TEST(LcpProblem, MismatchedSizesAreRejected) {
   EXPECT_THROW(check_lcp({MatrixXd(2, 3), VectorXd(2)}), std::invalid_argument);
   EXPECT_THROW(check_lcp({MatrixXd::Zero(2, 2), VectorXd(3)}), std::invalid_argument);
+}
+
+// M = [1 -1; -1 1] is singular with kernel r = (1, 1); q(s) = (1 - 3 s, 1 + s) for a load step
+// s. q(s) . r = 2 - 2 s: r certifies no solution for s > 1, and for s <= 1 z = (3 s - 1, 0)
+// (or z = 0 while s <= 1/3) solves it. So a ray found at s = 1.5 proves every step from
+// 1 / 1.5 of it on.
+TEST(CertifiedFrom, IsWhereTheLoadMakesTheCertificateHold) {
+  const MatrixXd m{{1.0, -1.0}, {-1.0, 1.0}};
+  const auto q = [](double s) { return VectorXd{{1.0 - 3.0 * s, 1.0 + s}}; };
+  const VectorXd r{{1.0, 1.0}};
+  const double step = 1.5;
+  const double t = certified_from(q(step), q(step) - q(0.0), r);
+  EXPECT_NEAR(t * step, 1.0, 1e-7);
+  EXPECT_GT(t * step, 1.0);  // the tolerance of the certificate lies on the safe side
+  EXPECT_EQ(Lemke().solve({m, q(0.999 * t * step)}).status, LcpStatus::solved);
+  EXPECT_EQ(Lemke().solve({m, q(1.001 * t * step)}).status, LcpStatus::no_solution);
+  // A load that does not drive the mechanism (q . r grows with it: at no step q . r = -4)
+  // proves no less than the step itself.
+  EXPECT_EQ(certified_from(VectorXd{{-3.0, 1.0}}, VectorXd{{1.0, 1.0}}, r), 1.0);
 }
 
 }  // namespace

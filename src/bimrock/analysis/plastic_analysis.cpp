@@ -1,10 +1,12 @@
 #include <bimrock/analysis/plastic_analysis.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <set>
 #include <utility>
@@ -25,6 +27,9 @@ namespace {
 /// Plastic displacements of a load-controlled step more than this many times its elastic ones
 /// are a mechanism resolved only by round-off (see try_increment).
 constexpr double kMechanismRatio = 1e6;
+/// Candidates within the margin of yield (PlasticOptions::candidate_margin), at most this many
+/// per point that reaches it.
+constexpr std::size_t kNearPerReached = 2;
 
 // The LCP solvers and what they keep from one increment to the next.
 struct LcpSolvers {
@@ -136,9 +141,10 @@ struct Trial {
   std::vector<YieldRow> rows;
   Eigen::VectorXd lambda;  // increments of the multipliers (opening: of the gap)
   Eigen::VectorXd du;
-  Eigen::VectorXd ray;  // collapse: Lemke's secondary ray, the mechanism's multipliers
-  double kink = 1.0;    // < 1: the fraction of the step at which a softening law reached
-                        // its residual value (the step must stop there)
+  Eigen::VectorXd ray;           // collapse: Lemke's secondary ray, the mechanism's multipliers
+  double proven_fraction = 1.0;  // collapse: the least fraction of the step its ray proves
+  double kink = 1.0;             // < 1: the fraction of the step at which a softening law reached
+                                 // its residual value (the step must stop there)
   int lcp_size = 0;
   int pivots = 0;
   int active_set_iterations = 0;
@@ -220,15 +226,17 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   // select_candidate_rows: open points, and points whose elastic predictor reaches yield (by
   // more than the tolerance of the final check: a joint that sits exactly on its tension
   // cut-off, as the vertical joints of a free-standing wall do, is not a candidate for the
-  // round-off of its stress) or comes within the candidate margin of it.
-  std::vector<double> predicted_f(ctx.points.size());
+  // round-off of its stress); then the points nearest to it, within the candidate margin.
+  std::vector<Eigen::VectorXd> predicted_f(ctx.points.size());  // f + df, per mode
+  std::vector<Eigen::VectorXd> change_f(ctx.points.size());     // |df|
   double scale = 0.0;
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
     const YieldPoint& point = ctx.points[p];
     const Eigen::VectorXd stress = local_stress(model, point, s.points[p], s.u);
     const LocalYield y = linearize(model, point, s.points[p], stress);
     const Eigen::VectorXd df = y.a * local_of(model, point, du_elastic);
-    predicted_f[p] = (y.f + df + opt.candidate_margin * df.cwiseAbs()).maxCoeff();
+    predicted_f[p] = y.f + df;
+    change_f[p] = df.cwiseAbs();
     scale =
         std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
   }
@@ -239,8 +247,28 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   }
   const double tol = opt.yield_tolerance * std::max(scale, 1.0);
   std::vector<char> candidate(ctx.points.size(), 0);
-  for (std::size_t p = 0; p < ctx.points.size(); ++p)
-    candidate[p] = s.points[p].gap > 0.0 || predicted_f[p] > tol ? 1 : 0;
+  std::vector<std::pair<double, std::size_t>> near;  // (margin it needs, point)
+  std::size_t reached = 0;
+  for (std::size_t p = 0; p < ctx.points.size(); ++p) {
+    if (s.points[p].gap > 0.0 || predicted_f[p].maxCoeff() > tol) {
+      candidate[p] = 1;
+      ++reached;
+      continue;
+    }
+    double needed = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < predicted_f[p].size(); ++i)
+      if (change_f[p](i) > 0.0)
+        needed = std::min(needed, (tol - predicted_f[p](i)) / change_f[p](i));
+    if (needed < opt.candidate_margin)
+      near.emplace_back(needed, p);
+  }
+  // The nearest first, and no more than kNearPerReached for each point that reaches yield: a
+  // large step from an unloaded state (a stage's first) brings nearly every point within the
+  // margin.
+  const std::size_t keep = std::min(near.size(), kNearPerReached * reached);
+  std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end());
+  for (std::size_t k = 0; k < keep; ++k)
+    candidate[near[k].second] = 1;
   clock.lap("increments: candidates");
 
   // The warm start: the rows that yielded in the last increment, then those of the last round
@@ -346,6 +374,10 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         if (r.ray.size() == m) {
           t.ray = r.ray;
           t.du = solvers.columns.combine(sys, r.ray);
+          // Under load control q moves with the step and M does not: the ray proves every
+          // step from some fraction of this one on (a tighter upper bound for the bracket).
+          if (!control)
+            t.proven_fraction = certified_from(lcp.q(), Eigen::VectorXd(-cx * step), r.ray);
         }
         return t;
       }
@@ -547,15 +579,18 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         continue;
       }
       // Bisect the failed step: carry what can be carried, bracket the collapse load. The
-      // bracket's upper end is the nearest step proven to fail (a ray); steps that fail only
+      // bracket's upper end is the nearest load proven to fail (by a ray, which proves every
+      // step from a fraction of the failed one on: certified_from()); steps that fail only
       // numerically, close to the collapse where the LCP is nearly singular, are cut again
       // but prove nothing (DESIGN.md section 3).
       double carried = result.state.stage_factor;
       double failing_step = step;
       std::optional<double> proven;  // stage factor of the nearest ray
       Trial failure = t;
-      if (t.status == Trial::Status::collapse)
-        proven = carried + step;
+      if (t.status == Trial::Status::collapse) {
+        failing_step *= t.proven_fraction;
+        proven = carried + failing_step;
+      }
       for (int b = 0; b < opt.max_bisections; ++b) {
         const double upper = proven ? *proven : carried + failing_step;
         if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper))
@@ -564,11 +599,14 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         if (half.status == Trial::Status::carried) {
           finish(half);
           carried = result.state.stage_factor;
+          failing_step = proven ? *proven - carried : 0.5 * failing_step;
         } else if (half.status == Trial::Status::collapse) {
-          proven = carried + 0.5 * failing_step;
+          proven = carried + 0.5 * failing_step * half.proven_fraction;
+          failing_step = *proven - carried;
           failure = half;
+        } else {
+          failing_step *= 0.5;
         }
-        failing_step *= 0.5;
       }
       if (!proven) {
         // Neither carried nor proven to fail: near a limit load the LCP is nearly singular.

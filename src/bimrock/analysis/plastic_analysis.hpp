@@ -21,11 +21,12 @@ struct PlasticOptions {
   /// A yield function counts as violated above this fraction of the stress scale.
   double yield_tolerance = 1e-9;
   /// A point's rows are candidates of the increment's LCP where its elastic predictor f + df
-  /// comes within margin |df| of yield (0: only where it reaches yield). Plastic flow moves
+  /// reaches yield, or comes within margin |df| of it (0: only where it reaches yield), the
+  /// nearest first and at most two such points per point that reaches yield. Plastic flow moves
   /// stress onto points the predictor left below yield; as candidates from the start they cost
   /// a row each, where they would otherwise cost a further round (LCP, update, check of every
-  /// point). 3 was measured best on the abutment model of `bimrock bench` (979 blocks: candidate
-  /// rounds 92 -> 71, tangent factorizations 267 -> 143; larger margins add rows, not savings).
+  /// point). 3 was measured on the abutment model of `bimrock bench` (979 blocks: candidate
+  /// rounds 92 -> 71, tangent factorizations 267 -> 143; 10 saved no more).
   double candidate_margin = 3.0;
   /// Solve each LCP by the primal-dual active-set method first, Lemke only where it fails
   /// (false: Lemke always; the answers agree, only the time differs).

@@ -34,20 +34,36 @@ const char* to_string(LcpStatus status) {
   return "?";
 }
 
+namespace {
+// A kernel vector of a numerically singular active block is accurate to about a pivot
+// tolerance; columns of M that are round-off residues of a cancellation (a mechanism) are held
+// to a fraction of max|M| |r|_1 instead: far above their residues, far below a real stiffness.
+constexpr double tol = 1e-8;
+constexpr double floor_fraction = 1e-10;
+}  // namespace
+
 bool certifies_infeasibility(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
                              const Eigen::VectorXd& mtr, const Eigen::VectorXd& mtr_size,
                              double m_max) {
-  // A kernel vector of a numerically singular active block is accurate to about a pivot
-  // tolerance; columns of M that are round-off residues of a cancellation (a mechanism) are held
-  // to a fraction of max|M| |r|_1 instead: far above their residues, far below a real stiffness.
-  constexpr double tol = 1e-8;
-  constexpr double floor_fraction = 1e-10;
   if (r.size() == 0 || r.size() != q.size())
     return false;
   const double floor = floor_fraction * m_max * r.cwiseAbs().sum();
   return (r.array() >= -tol * r.cwiseAbs().maxCoeff()).all() &&
          (mtr.array() <= tol * mtr_size.array() + floor).all() &&
          q.dot(r) < -tol * q.cwiseAbs().dot(r.cwiseAbs());
+}
+
+double certified_from(const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
+                      const Eigen::VectorXd& r) {
+  // q(t) . r = (q - dq) . r + t dq . r, held below -tol sum |q(t)| |r|, whose bound on [0, 1]
+  // is sum (|q| + |dq|) |r|.
+  const double at_zero = (q - dq).dot(r);
+  const double slope = dq.dot(r);
+  const double margin = tol * (q.cwiseAbs() + dq.cwiseAbs()).dot(r.cwiseAbs());
+  if (!(slope < 0.0) || !(at_zero + slope < -margin))
+    return 1.0;
+  const double t = (-margin - at_zero) / slope;
+  return t > 0.0 && t < 1.0 ? t : 1.0;
 }
 
 double LcpResiduals::worst_relative() const {

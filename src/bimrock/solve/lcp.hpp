@@ -78,6 +78,14 @@ struct LcpResult {
                                            const Eigen::VectorXd& mtr,
                                            const Eigen::VectorXd& mtr_size, double m_max);
 
+/// A certificate r of LCP(M, q) certifies LCP(M, q - t dq) too, M^T r being the same, as long
+/// as q . r stays below certifies_infeasibility's tolerance. For a q that moves with the load,
+/// q = q0 + dq at the step taken and q0 at no step, this is the least fraction t of that step
+/// from which on (t <= t' <= 1) r certifies the LCP: an upper bound on the collapse load (the
+/// step itself, 1, when the load does not drive the mechanism).
+[[nodiscard]] double certified_from(const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
+                                    const Eigen::VectorXd& r);
+
 /// The interface every LCP solver implements, so Lemke, projected Gauss-Seidel and later a
 /// sparse or distributed backend sit side by side and are compared on the same problems.
 class LcpSolver {
