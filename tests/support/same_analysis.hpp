@@ -1,15 +1,24 @@
 #pragma once
-// The check shared by the verification tests that run one plastic analysis two ways (a second
-// method): the same collapse bracket and, up to the first step the bisections cut differently,
-// the same monitor displacements.
+// What the verification tests share that run one plastic analysis two ways (a second method):
+// the model, and the check that both runs give the same collapse bracket and, up to the first
+// step the bisections cut differently, the same monitor displacements.
 #include <algorithm>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/model/reference_cases.hpp>
 
 namespace bimrock::testing {
+
+/// The abutment model of `bimrock bench` asked for 100 blocks (283: the mass is at least 8 m
+/// wide), loaded to collapse: a jointed mass, Mohr-Coulomb joints with associated flow, a
+/// thrust on a strip.
+inline PlasticResult run_abutment(const PlasticOptions& options) {
+  return run_plastic_analysis(build_model(abutment_case(100, 25, 1.2 * abutment_collapse_shear())),
+                              options);
+}
 
 inline void expect_same_analysis(const PlasticResult& a, const PlasticResult& b) {
   ASSERT_TRUE(a.collapse.has_value());

@@ -11,7 +11,6 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
-#include <bimrock/model/reference_cases.hpp>
 
 #include "support/same_analysis.hpp"
 
@@ -21,8 +20,7 @@ namespace {
 PlasticResult run_abutment(double margin) {
   PlasticOptions o;
   o.candidate_margin = margin;
-  return run_plastic_analysis(build_model(abutment_case(100, 25, 1.2 * abutment_collapse_shear())),
-                              o);
+  return testing::run_abutment(o);
 }
 
 int total_rounds(const PlasticResult& r) {

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
-#include <bimrock/model/reference_cases.hpp>
 
 #include "support/same_analysis.hpp"
 
@@ -20,8 +19,7 @@ namespace {
 PlasticResult run_abutment(int reduced_tangent_rows) {
   PlasticOptions o;
   o.reduced_tangent_rows = reduced_tangent_rows;
-  return run_plastic_analysis(build_model(abutment_case(100, 25, 1.2 * abutment_collapse_shear())),
-                              o);
+  return testing::run_abutment(o);
 }
 
 TEST(ReducedTangentRoute, GivesTheSameAnalysisAsTheDenseActiveBlock) {
