@@ -30,6 +30,9 @@ constexpr double kMechanismRatio = 1e6;
 /// Candidates within the margin of yield (PlasticOptions::candidate_margin), at most this many
 /// per point that reaches it.
 constexpr std::size_t kNearPerReached = 2;
+/// Where a collapse certificate bounds the collapse load, the bisection's trials go this far
+/// towards the bound (each carried one shrinks the bracket tenfold) until one fails.
+constexpr double kAimAtBound = 0.9;
 
 // The LCP solvers and what they keep from one increment to the next.
 struct LcpSolvers {
@@ -587,25 +590,33 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       double failing_step = step;
       std::optional<double> proven;  // stage factor of the nearest ray
       Trial failure = t;
+      // A certificate's bound is often the collapse load itself (its mechanism is the one that
+      // forms): the trials aim near it, where halving would take ~log2(gap / tolerance) carried
+      // trials, until one of them fails.
+      bool aim = false;
       if (t.status == Trial::Status::collapse) {
         failing_step *= t.proven_fraction;
         proven = carried + failing_step;
+        aim = t.proven_fraction < 1.0;
       }
       for (int b = 0; b < opt.max_bisections; ++b) {
         const double upper = proven ? *proven : carried + failing_step;
         if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper))
           break;
-        const Trial half = try_increment(ctx, result.state, 0.5 * failing_step, opt, solvers);
+        const double trial = (aim ? kAimAtBound : 0.5) * failing_step;
+        const Trial half = try_increment(ctx, result.state, trial, opt, solvers);
         if (half.status == Trial::Status::carried) {
           finish(half);
           carried = result.state.stage_factor;
-          failing_step = proven ? *proven - carried : 0.5 * failing_step;
+          failing_step = proven ? *proven - carried : failing_step - trial;
         } else if (half.status == Trial::Status::collapse) {
-          proven = carried + 0.5 * failing_step * half.proven_fraction;
+          proven = carried + trial * half.proven_fraction;
           failing_step = *proven - carried;
           failure = half;
+          aim = false;
         } else {
-          failing_step *= 0.5;
+          failing_step = trial;
+          aim = false;
         }
       }
       if (!proven) {
