@@ -65,7 +65,7 @@ Eigen::VectorXd kernel_certificate(const Eigen::MatrixXd& a, const Eigen::Matrix
     s(i) = a(i, i) > 0.0 ? 1.0 / std::sqrt(a(i, i)) : 1.0;
   Eigen::MatrixXd shifted = s.asDiagonal() * (0.5 * (a + a.transpose())) * s.asDiagonal();
   // The eigenvector of the smallest eigenvalue by inverse iteration on the scaled block (unit
-  // diagonal) shifted by 1e-10: a factorization, a sixth of a full eigendecomposition's work.
+  // diagonal) shifted by 1e-10: one factorization, a small fraction of an eigendecomposition.
   // The start, all ones, is not orthogonal to a mechanism's multipliers (all >= 0).
   shifted.diagonal().array() += kKernelShift;
   const Eigen::LDLT<Eigen::MatrixXd> ldlt(shifted);
