@@ -91,14 +91,20 @@ VectorXd dense_solution(const ChainLcp& chain, const std::vector<Eigen::Index>& 
   return z;
 }
 
+// Rows first, first + step, ... below size: an active set.
+std::vector<Eigen::Index> every(Eigen::Index step, Eigen::Index size, Eigen::Index first = 0) {
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index r = first; r < size; r += step)
+    rows.push_back(r);
+  return rows;
+}
+
 TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   ChainLcp chain;
   make_chain(40, 7, chain);
   TangentFactor tangent;
   ReducedTangentEquations equations(chain.split, chain.k, tangent);
-  std::vector<Eigen::Index> active;
-  for (Eigen::Index r = 0; r < equations.size(); r += 3)  // one or both modes of a point
-    active.push_back(r);
+  const std::vector<Eigen::Index> active = every(3, equations.size());  // one or both modes
   const ActiveSetEquations::Solution s = equations.solve(active);
   ASSERT_TRUE(s.regular);
   const VectorXd z = dense_solution(chain, active, {});
@@ -115,9 +121,8 @@ TEST(ReducedTangent, ReusesTheKeptFactorOnlyForTheSameTangent) {
   ChainLcp chain;
   make_chain(30, 9, chain);
   TangentFactor tangent;
-  std::vector<Eigen::Index> odd, even;
-  for (Eigen::Index r = 0; r < chain.split.q.size(); ++r)
-    (r % 2 ? odd : even).push_back(r);
+  const std::vector<Eigen::Index> even = every(2, chain.split.q.size());
+  const std::vector<Eigen::Index> odd = every(2, chain.split.q.size(), 1);
   {
     ReducedTangentEquations first(chain.split, chain.k, tangent);
     ASSERT_TRUE(first.solve(odd).regular);
@@ -141,9 +146,7 @@ TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {
   make_chain(40, 5, chain);
   TangentFactor tangent;
   ReducedTangentEquations equations(chain.split, chain.k, tangent);
-  std::vector<Eigen::Index> active;
-  for (Eigen::Index r = 0; r < equations.size(); r += 2)
-    active.push_back(r);
+  const std::vector<Eigen::Index> active = every(2, equations.size());
   std::mt19937 rng(3);
   ActiveSetEquations::Damping damping{VectorXd::Zero(static_cast<Eigen::Index>(active.size())),
                                       testing::random_vector(equations.size(), rng)};

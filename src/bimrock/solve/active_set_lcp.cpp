@@ -425,7 +425,18 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     z = std::move(step.z);
     const Eigen::VectorXd& w = step.w;
     if (newton) {
-      LcpResult projected = problem.result(LcpStatus::solved, z.cwiseMax(0.0), iteration);
+      // The iterate projected on z >= 0; where it has no negative entry it is z itself, whose w
+      // the step measured already (no back-solve).
+      LcpResult projected;
+      if (z.size() > 0 && z.minCoeff() >= 0.0) {
+        projected.status = LcpStatus::solved;
+        projected.z = z;
+        projected.w = step.w;
+        projected.residuals = measure(z, step.w, step.w_scale);
+        projected.steps = iteration;
+      } else {
+        projected = problem.result(LcpStatus::solved, z.cwiseMax(0.0), iteration);
+      }
       const double f = objective(projected.z, projected.w, q);
       if (f < best_objective) {
         best_objective = f;
