@@ -583,32 +583,43 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       }
       // Bisect the failed step: carry what can be carried, bracket the collapse load. The
       // bracket's upper end is the nearest load proven to fail (by a ray, which proves every
-      // step from a fraction of the failed one on: certified_from()); steps that fail only
-      // numerically, close to the collapse where the LCP is nearly singular, are cut again
-      // but prove nothing (DESIGN.md section 3).
+      // step from a fraction of the failed one on: certified_from()). A step that fails only
+      // numerically (close to the collapse, where the LCP is nearly singular, or a large step
+      // whose active set the solvers did not find) proves nothing: it is cut, and once a part
+      // of it has carried the rest of the increment is tried again from the new state
+      // (DESIGN.md section 3).
       double carried = result.state.stage_factor;
-      double failing_step = step;
+      double remaining = rest;       // of this increment, in the units of `step`
+      double failing_step = rest;    // from the state: proven to fail, or the last that failed
       std::optional<double> proven;  // stage factor of the nearest ray
       Trial failure = t;
       // A certificate's bound is often the collapse load itself (its mechanism is the one that
       // forms): the trials aim near it, where halving would take ~log2(gap / tolerance) carried
       // trials, until one of them fails.
       bool aim = false;
+      bool retry = false;  // a numerical failure, then a carried part: try the rest again
       if (t.status == Trial::Status::collapse) {
         failing_step *= t.proven_fraction;
         proven = carried + failing_step;
         aim = t.proven_fraction < 1.0;
       }
-      for (int b = 0; b < opt.max_bisections; ++b) {
+      for (int b = 0; b < opt.max_bisections && remaining > 0.0; ++b) {
         const double upper = proven ? *proven : carried + failing_step;
         if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper))
           break;
-        const double trial = (aim ? kAimAtBound : 0.5) * failing_step;
+        const double trial = retry ? remaining : (aim ? kAimAtBound : 0.5) * failing_step;
+        retry = false;
         const Trial half = try_increment(ctx, result.state, trial, opt, solvers);
         if (half.status == Trial::Status::carried) {
           finish(half);
           carried = result.state.stage_factor;
-          failing_step = proven ? *proven - carried : failing_step - trial;
+          remaining = trial == remaining ? 0.0 : remaining - trial;
+          if (proven) {
+            failing_step = *proven - carried;
+          } else {
+            failing_step -= trial;
+            retry = true;
+          }
         } else if (half.status == Trial::Status::collapse) {
           proven = carried + trial * half.proven_fraction;
           failing_step = *proven - carried;
@@ -619,6 +630,8 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
           aim = false;
         }
       }
+      if (!proven && remaining == 0.0)
+        continue;  // the increment is carried in parts: go on with the next
       if (!proven) {
         // Neither carried nor proven to fail: near a limit load the LCP is nearly singular.
         // Stop here, honestly, with every carried increment kept; not a collapse.
