@@ -2,6 +2,7 @@
 // method on the same LCP: the dense matrix M = N - C K^-1 Phi formed with a dense LDLT of K,
 // solved by a dense LU (one active set) or by Lemke (the whole LCP; M is positive definite, so
 // the solution is unique).
+#include <algorithm>
 #include <random>
 #include <vector>
 
@@ -138,6 +139,67 @@ TEST(ReducedTangent, ReusesTheKeptFactorOnlyForTheSameTangent) {
   EXPECT_EQ(second.factorizations(), 1);
   const VectorXd z_even = dense_solution(chain, even, {});
   EXPECT_LE((other.z - z_even).cwiseAbs().maxCoeff(), 1e-9 * z_even.cwiseAbs().maxCoeff());
+}
+
+TEST(ReducedTangent, UpdatesTheKeptFactorWhereFewRowsChange) {
+  // Active sets that differ from the factored one in a few groups (a group dropped, one with
+  // another row, one added), then the same rows damped: each solved through the kept factor
+  // (Woodbury) and checked against the dense block; a wrong update would fail.
+  ChainLcp chain;
+  make_chain(40, 13, chain);
+  TangentFactor tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent, {64, 64.0});
+  const std::vector<Eigen::Index> first = every(3, equations.size());  // rows 0, 3, 6, ...
+  ASSERT_TRUE(equations.solve(first).regular);
+  ASSERT_EQ(equations.factorizations(), 1);
+  std::vector<Eigen::Index> next = first;
+  next.erase(std::find(next.begin(), next.end(), 9));        // group 4 leaves
+  next.insert(std::find(next.begin(), next.end(), 12), 13);  // group 6: both modes
+  next.insert(std::find(next.begin(), next.end(), 21), 20);  // group 10 joins
+  const ActiveSetEquations::Solution s = equations.solve(next);
+  ASSERT_TRUE(s.regular);
+  EXPECT_EQ(equations.factorizations(), 1);
+  EXPECT_EQ(equations.updated_factors(), 1);
+  const VectorXd z = dense_solution(chain, next, {});
+  const VectorXd w = chain.m_dense * z + chain.split.q;
+  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
+  EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+  ActiveSetEquations::Damping damping{VectorXd::Zero(static_cast<Eigen::Index>(next.size())),
+                                      VectorXd::Constant(equations.size(), 0.1)};
+  damping.factor.head(4).setConstant(0.5);
+  const ActiveSetEquations::Solution damped = equations.solve(next, damping);
+  ASSERT_TRUE(damped.regular);
+  EXPECT_EQ(equations.factorizations(), 1);
+  EXPECT_EQ(equations.updated_factors(), 2);
+  const VectorXd z_damped = dense_solution(chain, next, damping);
+  EXPECT_LE((damped.z - z_damped).cwiseAbs().maxCoeff(), 1e-9 * z_damped.cwiseAbs().maxCoeff());
+}
+
+TEST(ReducedTangent, AnUpdateToATangentThatIsNotPositiveDefiniteIsRefused) {
+  // With the N block of point 5 a hundredth of its springs' a D a^T, M_rr < 0 on its first row:
+  // the tangent of an active set holding it is indefinite (it has as many negative eigenvalues
+  // as M_AA). Through an update of a positive definite factor it would still be solved; the
+  // inertia of the capacitance must refuse it, and the solve must report the singular block
+  // that a fresh factorization reports.
+  ChainLcp chain;
+  make_chain(20, 17, chain);
+  MatrixXd n = MatrixXd(chain.n);
+  chain.m_dense.block(10, 10, 2, 2) -= 0.99 * n.block(10, 10, 2, 2);
+  n.block(10, 10, 2, 2) *= 0.01;
+  chain.n = n.sparseView();
+  ASSERT_LT(chain.m_dense(10, 10), 0.0);
+  const std::vector<Eigen::Index> first = {0, 4};
+  const std::vector<Eigen::Index> next = {0, 4, 10};
+  TangentFactor tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent, {64, 64.0});
+  ASSERT_TRUE(equations.solve(first).regular);
+  const ActiveSetEquations::Solution s = equations.solve(next);
+  EXPECT_FALSE(s.regular);
+  EXPECT_EQ(equations.updated_factors(), 0);
+  EXPECT_GE(equations.factorizations(), 2);  // the refused update, then a failed factorization
+  TangentFactor fresh_factor;
+  ReducedTangentEquations fresh(chain.split, chain.k, fresh_factor);
+  EXPECT_FALSE(fresh.solve(next).regular);
 }
 
 TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {

@@ -16,6 +16,8 @@
 /// certificate when the tangent's kernel gives one (else the caller goes back to the dense
 /// route). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
 /// independently of the tangent.
+#include <optional>
+#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Core>
@@ -45,11 +47,21 @@ struct TangentFactor {
   CholmodMatrix factored;  ///< the tangent `cholesky` holds the factor of (empty: none)
 };
 
+/// How much the tangent of a solve may differ from the one whose factor is kept and still be
+/// solved through it (a low-rank update) instead of factorized: rows whose terms differ, and
+/// back-solves for the columns not kept from earlier updates. Negative: chosen from the
+/// factor's memory and its cost against a back-solve's.
+struct TangentUpdateLimits {
+  Eigen::Index rows = -1;
+  double new_columns = -1.0;
+};
+
 class ReducedTangentEquations final : public ActiveSetEquations {
  public:
   /// @param k the factor of K (to measure results)
   /// @param tangent analyzed here when its pattern is not the tangent's
-  ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k, TangentFactor& tangent);
+  ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k, TangentFactor& tangent,
+                          TangentUpdateLimits limits = {});
 
   [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return lcp_.q; }
@@ -66,12 +78,31 @@ class ReducedTangentEquations final : public ActiveSetEquations {
                                const Damping& damping) override;
   [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
 
-  /// Numeric factorizations of the tangent so far, and the solves that reused a factor.
+  /// Numeric factorizations of the tangent so far, the solves that reused a factor as it was,
+  /// and those that reused it through a low-rank update (Woodbury).
   [[nodiscard]] int factorizations() const { return factorizations_; }
   [[nodiscard]] int reused_factors() const { return reused_; }
+  [[nodiscard]] int updated_factors() const { return updated_; }
 
  private:
   struct Local;
+  struct Update;
+  /// The part of the tangent one group of active rows takes away: Phi_g N_gg^-1 C_g, kept as
+  /// its rows and the (damped) N_gg.
+  struct Term {
+    std::vector<Eigen::Index> rows;
+    Eigen::MatrixXd n_local;
+  };
+  /// The solve of the new tangent through the kept factor of another one when they differ in
+  /// few groups (S_new = S_kept - P D P^T, Woodbury), or nothing if they differ in too many or
+  /// the new one is not positive definite.
+  [[nodiscard]] std::optional<Update> update_from_kept(const std::vector<Term>& terms);
+  [[nodiscard]] Eigen::VectorXd solve_tangent(const Eigen::VectorXd& rhs,
+                                              const Update* update) const;
+  /// solve(), through a low-rank update of the kept factor if `may_update`; nothing if that
+  /// was not accurate enough.
+  [[nodiscard]] std::optional<Solution> solve_on(const std::vector<Eigen::Index>& active,
+                                                 const Damping& damping, bool may_update);
   [[nodiscard]] Eigen::VectorXd strain(const std::vector<Eigen::Index>& active, const Local& l,
                                        const Eigen::VectorXd& x) const;
   /// Factorizes `tangent` unless the factor kept is of the same matrix; false if it is not
@@ -85,8 +116,16 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   const SparseCholesky& k_;
   TangentFactor& tangent_;
   CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
+  TangentUpdateLimits limits_;
+  // The tangent the kept factor is of, as K minus these terms, when this LCP made or confirmed
+  // it (the rows of another LCP are numbered otherwise).
+  std::optional<std::vector<Term>> kept_terms_;
+  // S_kept^-1 phi_r of the rows updates used, kept while the factor is: the rows an update
+  // changes are much the same from one active-set iteration to the next.
+  std::unordered_map<Eigen::Index, Eigen::VectorXd> kept_columns_;
   int factorizations_ = 0;
   int reused_ = 0;
+  int updated_ = 0;
 };
 
 }  // namespace bimrock

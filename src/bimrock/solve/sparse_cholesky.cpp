@@ -116,6 +116,7 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   n_ = lower.rows();
   analyzed_nonzeros_ = lower.nonZeros();
+  factor_flops_ = cm.fl;
   factorized_ = false;
 }
 
@@ -133,6 +134,20 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
     factorized_ = false;
     return false;
   }
+  // A small matrix gets a simplicial LDL' factor, which does not fail where the matrix is not
+  // positive definite: its D must be checked (the reduced tangent relies on the refusal).
+  const cholmod_factor* f = impl_->factor;
+  if (!f->is_super && !f->is_ll) {
+    const auto* p = static_cast<const std::int64_t*>(f->p);
+    const auto* x = static_cast<const double*>(f->x);
+    for (std::int64_t j = 0; j < n_; ++j)
+      if (!(x[p[j]] > 0.0)) {
+        const auto* perm = static_cast<const std::int64_t*>(f->Perm);
+        failed_column_ = perm ? perm[j] : j;
+        factorized_ = false;
+        return false;
+      }
+  }
   failed_column_ = -1;
   factorized_ = true;
   return true;
@@ -145,6 +160,10 @@ std::int64_t SparseCholesky::factor_nonzeros() const {
   if (f->is_super)
     return static_cast<std::int64_t>(f->xsize);
   return static_cast<std::int64_t>(f->nzmax);
+}
+
+bool SparseCholesky::supernodal() const {
+  return impl_->factor && impl_->factor->is_super;
 }
 
 Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {

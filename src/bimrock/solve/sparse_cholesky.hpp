@@ -37,6 +37,11 @@ class SparseCholesky {
   [[nodiscard]] std::int64_t rows() const { return n_; }
   /// Non-zeros of the factor L (a measure of its memory: 8 bytes each plus indices).
   [[nodiscard]] std::int64_t factor_nonzeros() const;
+  /// CHOLMOD chose a supernodal factor (else simplicial: small or very sparse factors).
+  [[nodiscard]] bool supernodal() const;
+  /// Floating-point operations of one numeric factorization (CHOLMOD's count at analysis; 0
+  /// before analyze). A solve costs about 4 factor_nonzeros() per right-hand side.
+  [[nodiscard]] double factor_flops() const { return factor_flops_; }
 
   /// x = K^-1 b for one or several right-hand sides.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
@@ -48,6 +53,7 @@ class SparseCholesky {
   std::int64_t n_ = 0;
   std::int64_t analyzed_nonzeros_ = 0;
   std::int64_t failed_column_ = -1;
+  double factor_flops_ = 0.0;
   bool factorized_ = false;
 };
 

@@ -1,0 +1,80 @@
+// The sparse Cholesky factor (CHOLMOD) on the kind of matrix the analysis builds: 6 unknowns
+// per block, each block coupled to its neighbours on a grid. The solution must have a residual
+// at round-off, and a matrix that is not positive definite must be refused whatever factor
+// CHOLMOD picks: a small one is simplicial (LDL' by default, which would not fail), a large
+// one supernodal.
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include <bimrock/solve/sparse_cholesky.hpp>
+
+#include "solve/random_lcp.hpp"
+
+namespace bimrock {
+namespace {
+
+// The lower triangle of a side x side grid of blocks, each coupled to the next in x and in y
+// by a random positive definite 12 x 12 block, plus the identity: positive definite.
+CholmodMatrix grid(int side, unsigned seed) {
+  std::mt19937 rng(seed);
+  const int n = 6 * side * side;
+  std::vector<Eigen::Triplet<double, std::int64_t>> entries;
+  auto couple = [&](int a, int b) {
+    const Eigen::MatrixXd k = testing::random_spd(12, rng);
+    const int at[2] = {6 * a, 6 * b};
+    for (int i = 0; i < 12; ++i)
+      for (int j = 0; j < 12; ++j) {
+        const int row = at[i / 6] + i % 6;
+        const int col = at[j / 6] + j % 6;
+        if (row >= col)
+          entries.emplace_back(row, col, k(i, j));
+      }
+  };
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      if (x + 1 < side)
+        couple(y * side + x, y * side + x + 1);
+      if (y + 1 < side)
+        couple(y * side + x, (y + 1) * side + x);
+    }
+  for (int i = 0; i < n; ++i)
+    entries.emplace_back(i, i, 1.0);
+  CholmodMatrix lower(n, n);
+  lower.setFromTriplets(entries.begin(), entries.end());
+  return lower;
+}
+
+TEST(SparseCholesky, SolvesToRoundOffWithEitherKindOfFactor) {
+  for (int side : {2, 30}) {
+    const CholmodMatrix lower = grid(side, 5);
+    SparseCholesky k;
+    k.analyze(lower, 6);
+    ASSERT_TRUE(k.factorize(lower));
+    EXPECT_EQ(k.supernodal(), side == 30) << side;
+    std::mt19937 rng(2);
+    const Eigen::VectorXd b = testing::random_vector(lower.rows(), rng);
+    const Eigen::VectorXd x = k.solve(b);
+    const Eigen::VectorXd residual = lower.selfadjointView<Eigen::Lower>() * x - b;
+    EXPECT_LE(residual.norm(), 1e-12 * lower.norm() * x.norm()) << side << " blocks a side";
+  }
+}
+
+TEST(SparseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
+  for (int side : {2, 30}) {
+    CholmodMatrix lower = grid(side, 7);
+    const std::int64_t last = lower.rows() - 1;
+    lower.coeffRef(last, last) = -1.0;  // a negative diagonal entry: not positive definite
+    SparseCholesky k;
+    k.analyze(lower, 6);
+    EXPECT_FALSE(k.factorize(lower)) << side << " blocks a side";
+    EXPECT_GE(k.failed_column(), 0);
+    EXPECT_FALSE(k.factorized());
+  }
+}
+
+}  // namespace
+}  // namespace bimrock
