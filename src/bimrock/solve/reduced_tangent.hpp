@@ -15,7 +15,8 @@
 /// equations report themselves singular, with the mechanism's multipliers as a Farkas
 /// certificate when the tangent's kernel gives one (else the caller goes back to the dense
 /// route). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
-/// independently of the tangent.
+/// independently of the tangent. An active set whose tangent differs from the factored one in
+/// a few groups is solved through that factor instead (Woodbury, see update_from_kept).
 #include <optional>
 #include <unordered_map>
 #include <vector>
