@@ -17,12 +17,6 @@
 namespace bimrock {
 namespace {
 
-PlasticResult run_abutment(double margin) {
-  PlasticOptions o;
-  o.candidate_margin = margin;
-  return testing::run_abutment(o);
-}
-
 int total_rounds(const PlasticResult& r) {
   int rounds = 0;
   for (const IncrementRecord& h : r.history)
@@ -31,8 +25,8 @@ int total_rounds(const PlasticResult& r) {
 }
 
 TEST(CandidateMargin, ChangesTheRoundsNotTheAnalysis) {
-  const PlasticResult exact = run_abutment(0.0);
-  const PlasticResult margin = run_abutment(PlasticOptions{}.candidate_margin);
+  const PlasticResult exact = testing::run_abutment({.candidate_margin = 0.0});
+  const PlasticResult margin = testing::run_abutment({});
   std::printf("no margin, then margin: %d and %d candidate rounds\n", total_rounds(exact),
               total_rounds(margin));
   testing::expect_same_analysis(exact, margin);

@@ -16,15 +16,9 @@
 namespace bimrock {
 namespace {
 
-PlasticResult run_abutment(int reduced_tangent_rows) {
-  PlasticOptions o;
-  o.reduced_tangent_rows = reduced_tangent_rows;
-  return testing::run_abutment(o);
-}
-
 TEST(ReducedTangentRoute, GivesTheSameAnalysisAsTheDenseActiveBlock) {
-  const PlasticResult dense = run_abutment(-1);
-  const PlasticResult tangent = run_abutment(0);
+  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult tangent = testing::run_abutment({.reduced_tangent_rows = 0});
   int factorizations = 0;
   for (const IncrementRecord& r : tangent.history)
     factorizations += r.tangent_factorizations;
