@@ -175,6 +175,107 @@ TEST(ReducedTangent, UpdatesTheKeptFactorWhereFewRowsChange) {
   EXPECT_LE((damped.z - z_damped).cwiseAbs().maxCoeff(), 1e-9 * z_damped.cwiseAbs().maxCoeff());
 }
 
+// The LCP of a later candidate round: the rows of the groups `groups` of `chain`, numbered
+// anew, with the group ids of the chain (the yield points of the analysis); group `moved` (if
+// any) with its N block scaled, as hardening would change it. (Scaling its rows of Phi and C
+// as well would not change its term of the tangent: Phi_g N_gg^-1 C_g depends on their span
+// only.)
+struct SubLcp {
+  CholmodMatrix c, phi, n;
+  SplitLcp split;
+  MatrixXd m_dense;
+  std::vector<Eigen::Index> rows;  // each row's row in the chain
+};
+
+void make_sub(const ChainLcp& chain, const std::vector<Eigen::Index>& groups, SubLcp& out,
+              Eigen::Index moved = -1, double scale = 1.0) {
+  for (Eigen::Index g : groups)
+    for (Eigen::Index r = 2 * g; r < 2 * g + 2; ++r)
+      out.rows.push_back(r);
+  const auto m = static_cast<Eigen::Index>(out.rows.size());
+  const MatrixXd c_full(chain.c);
+  const MatrixXd n_full(chain.n);
+  MatrixXd c(m, c_full.cols());
+  MatrixXd n = MatrixXd::Zero(m, m);
+  VectorXd q(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const Eigen::Index ri = out.rows[static_cast<std::size_t>(i)];
+    const double si = ri / 2 == moved ? scale : 1.0;
+    c.row(i) = c_full.row(ri);
+    q(i) = chain.split.q(ri);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      const Eigen::Index rj = out.rows[static_cast<std::size_t>(j)];
+      n(i, j) = (rj / 2 == moved ? si : 1.0) * n_full(ri, rj);
+    }
+  }
+  const MatrixXd k = MatrixXd(chain.k_lower).selfadjointView<Eigen::Lower>();
+  out.c = c.sparseView();
+  out.phi = c.transpose().sparseView();
+  out.n = n.sparseView();
+  out.m_dense = n - c * k.ldlt().solve(c.transpose());
+  out.split = SplitLcp{&chain.k_lower, &out.c, &out.phi, &out.n, q, {}, {}};
+  for (Eigen::Index r : out.rows) {
+    out.split.group.push_back(r / 2);
+    out.split.group_rank.push_back(2);
+  }
+}
+
+TEST(ReducedTangent, ALaterLcpIsSolvedThroughTheFactorAnEarlierOneKept) {
+  // Round 1 has the rows of every point and factorizes an active set; round 2 (other row
+  // numbers, some points no longer candidates) asks for an active set that differs from it in
+  // a few points: solved through the kept factor, no factorization. If a point's hardening
+  // changed between the rounds (its N block differs), its term is not the kept one: still an
+  // update, and the solution is right. Every solution is checked against the dense
+  // block of its own LCP.
+  ChainLcp chain;
+  make_chain(40, 21, chain);
+  TangentFactor tangent;
+  std::vector<Eigen::Index> first;  // chain rows: both modes of every third point
+  for (Eigen::Index g = 0; g < 40; g += 3)
+    first.insert(first.end(), {2 * g, 2 * g + 1});
+  {
+    ReducedTangentEquations round1(chain.split, chain.k, tangent, {64, 64.0});
+    ASSERT_TRUE(round1.solve(first).regular);
+    ASSERT_EQ(round1.factorizations(), 1);
+  }
+  std::vector<Eigen::Index> groups;  // candidates of round 2: every point but 1, 2, 4 and 5
+  for (Eigen::Index g = 0; g < 40; ++g)
+    if (g != 1 && g != 2 && g != 4 && g != 5)
+      groups.push_back(g);
+  for (const double scale : {1.0, 1.5}) {
+    SubLcp sub;
+    make_sub(chain, groups, sub, /*moved=*/9, scale);
+    // Active: the rows of `first` but point 3's, and point 7's first row.
+    std::vector<Eigen::Index> active;
+    for (std::size_t i = 0; i < sub.rows.size(); ++i) {
+      const Eigen::Index r = sub.rows[i];
+      if ((std::find(first.begin(), first.end(), r) != first.end() && r / 2 != 3) || r == 14)
+        active.push_back(static_cast<Eigen::Index>(i));
+    }
+    ReducedTangentEquations round2(sub.split, chain.k, tangent, {64, 64.0});
+    const ActiveSetEquations::Solution s = round2.solve(active);
+    ASSERT_TRUE(s.regular);
+    EXPECT_EQ(round2.factorizations(), 0) << scale;
+    EXPECT_EQ(round2.updated_factors(), 1) << scale;
+    const auto k = static_cast<Eigen::Index>(active.size());
+    MatrixXd a(k, k);
+    VectorXd rhs(k);
+    for (Eigen::Index i = 0; i < k; ++i) {
+      rhs(i) = -sub.split.q(active[static_cast<std::size_t>(i)]);
+      for (Eigen::Index j = 0; j < k; ++j)
+        a(i, j) =
+            sub.m_dense(active[static_cast<std::size_t>(i)], active[static_cast<std::size_t>(j)]);
+    }
+    const VectorXd za = a.partialPivLu().solve(rhs);
+    VectorXd z = VectorXd::Zero(sub.split.q.size());
+    for (Eigen::Index i = 0; i < k; ++i)
+      z(active[static_cast<std::size_t>(i)]) = za(i);
+    const VectorXd w = sub.m_dense * z + sub.split.q;
+    EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff()) << scale;
+    EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff()) << scale;
+  }
+}
+
 TEST(ReducedTangent, AnUpdateToATangentThatIsNotPositiveDefiniteIsRefused) {
   // With the N block of point 5 a hundredth of its springs' a D a^T, M_rr < 0 on its first row:
   // the tangent of an active set holding it is indefinite (it has as many negative eigenvalues

@@ -498,6 +498,17 @@ Collapse describe_collapse(int stage, double carried, double failed, const Trial
 
 }  // namespace
 
+// The result, with where the LCP phase's time went: the tangent's factorizations and solves,
+// and the solves with K (flexibility columns, and every LCP result measured).
+PlasticResult with_solver_work(PlasticResult result, const SparseCholesky& k,
+                               const LcpSolvers& solvers) {
+  const CholeskyWork& tangent = solvers.tangent.cholesky.work();
+  result.timings.add("(LCP: tangent factorizations)", tangent.factorize_seconds);
+  result.timings.add("(LCP: tangent solves)", tangent.solve_seconds);
+  result.timings.add("(solves with K)", k.work().solve_seconds);
+  return result;
+}
+
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt,
                                    const IncrementCallback& on_increment) {
   PlasticResult result;
@@ -639,13 +650,13 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
                               "the increment after stage factor " + std::to_string(carried) +
                                   " could not be solved accurately, nor shown to have no "
                                   "solution (the structure is close to a limit load)"};
-        return result;
+        return with_solver_work(std::move(result), k, solvers);
       }
       result.collapse = describe_collapse(st, carried, *proven, &failure, last ? &*last : nullptr);
-      return result;
+      return with_solver_work(std::move(result), k, solvers);
     }
   }
-  return result;
+  return with_solver_work(std::move(result), k, solvers);
 }
 
 }  // namespace bimrock

@@ -13,7 +13,8 @@
 namespace bimrock {
 
 struct Timings {
-  std::vector<std::pair<std::string, double>> phases;  ///< (phase, seconds), in order
+  /// (phase, seconds), in order; a phase in parentheses is a part of others, not summed.
+  std::vector<std::pair<std::string, double>> phases;
   /// When set, ScopedTimer also records each phase's peak resident memory (bytes) here; off by
   /// default (resetting the peak costs a walk of the page tables).
   bool track_memory = false;
@@ -30,8 +31,9 @@ struct Timings {
   }
   [[nodiscard]] double total() const {
     double t = 0.0;
-    for (const auto& p : phases)
-      t += p.second;
+    for (const auto& [name, seconds] : phases)
+      if (name.empty() || name.front() != '(')
+        t += seconds;
     return t;
   }
 };

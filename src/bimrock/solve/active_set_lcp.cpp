@@ -205,6 +205,19 @@ class ColumnEquations final : public ActiveSetEquations {
 };
 
 // The objective of the quadratic program of a symmetric LCP, 1/2 z.M z + q.z, from w = M z + q.
+// The multipliers z of a solve as an LCP iterate, where they have no negative entry: their w
+// was measured by the solve (no back-solve).
+LcpResult as_iterate(const Eigen::VectorXd& z, const ActiveSetEquations::Solution& step,
+                     int steps) {
+  LcpResult r;
+  r.status = LcpStatus::solved;
+  r.z = z;
+  r.w = step.w;
+  r.residuals = measure(z, step.w, step.w_scale);
+  r.steps = steps;
+  return r;
+}
+
 double objective(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const Eigen::VectorXd& q) {
   return 0.5 * z.dot(w + q);
 }
@@ -281,8 +294,12 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
     const Eigen::VectorXd d = step.z - z;
     double taken = 0.0;  // the step length that lowered the objective enough (0: none)
     for (double t = 1.0; taken == 0.0 && t >= std::ldexp(1.0, -kHalvings); t *= 0.5) {
-      Eigen::VectorXd trial = (z + t * d).cwiseMax(0.0);
-      LcpResult next = problem.result(LcpStatus::solved, trial, iteration + 1);
+      // The full step is the Newton point itself, whose w the solve measured when it has no
+      // negative multiplier.
+      Eigen::VectorXd trial = (t == 1.0 ? step.z : Eigen::VectorXd(z + t * d)).cwiseMax(0.0);
+      LcpResult next = t == 1.0 && step.z.minCoeff() >= 0.0
+                           ? as_iterate(trial, step, iteration + 1)
+                           : problem.result(LcpStatus::solved, trial, iteration + 1);
       const double f_next = objective(trial, next.w, q);
       // The Newton point itself is taken when it solves the LCP: near a solution the decrease
       // is round-off and would be refused.
@@ -427,16 +444,9 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     if (newton) {
       // The iterate projected on z >= 0; where it has no negative entry it is z itself, whose w
       // the step measured already (no back-solve).
-      LcpResult projected;
-      if (z.size() > 0 && z.minCoeff() >= 0.0) {
-        projected.status = LcpStatus::solved;
-        projected.z = z;
-        projected.w = step.w;
-        projected.residuals = measure(z, step.w, step.w_scale);
-        projected.steps = iteration;
-      } else {
-        projected = problem.result(LcpStatus::solved, z.cwiseMax(0.0), iteration);
-      }
+      LcpResult projected = z.size() > 0 && z.minCoeff() >= 0.0
+                                ? as_iterate(z, step, iteration)
+                                : problem.result(LcpStatus::solved, z.cwiseMax(0.0), iteration);
       const double f = objective(projected.z, projected.w, q);
       if (f < best_objective) {
         best_objective = f;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <utility>
 
@@ -28,9 +29,12 @@ constexpr Eigen::Index kMostUpdatedRows = 256;
 /// The capacitance matrix of an update is singular below this relative eigenvalue (the new
 /// tangent is then nearly singular: left to a factorization, which finds a mechanism).
 constexpr double kSingularCapacitance = 1e-12;
-/// A solve through an update must meet the active rows' equations to this relative residual
-/// (the LCP asks for 1e-9), else the tangent is factorized.
-constexpr double kUpdateAccuracy = 1e-10;
+/// A solve must meet the active rows' equations to this relative residual (the LCP asks for
+/// 1e-9), else it is refined once, and one through an update, if still short of it, is done
+/// again on a factorized tangent.
+constexpr double kSolveAccuracy = 1e-10;
+/// Right-hand sides solved together (see solve_in_chunks).
+constexpr Eigen::Index kSolveChunk = 32;
 }  // namespace
 
 // S_new = S_kept - P D P^T, P = [Phi of the new terms | Phi of the old terms] (n x r), D =
@@ -38,7 +42,8 @@ constexpr double kUpdateAccuracy = 1e-10;
 // Y = S_kept^-1 P and the capacitance Cap = D^-1 - P^T Y = V diag(lambda) V^T.
 struct ReducedTangentEquations::Update {
   CholmodMatrix p;
-  std::vector<const Eigen::VectorXd*> y;  // its columns, kept in kept_columns_
+  std::vector<const Eigen::VectorXd*> y;  // S_kept^-1 P, in TangentFactor::columns or `own`
+  std::vector<Eigen::VectorXd> own;
   Eigen::MatrixXd vectors;
   Eigen::VectorXd inverse_values;
 };
@@ -78,8 +83,7 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
     for (Eigen::Index j = 0; j < n; ++j)
       shifted.coeffRef(j, j) += shift * d(j);
     ++factorizations_;
-    tangent_.factored = CholmodMatrix();  // the factor is of the shifted matrix
-    factorized = tangent_.cholesky.factorize(shifted);
+    factorized = tangent_.cholesky.factorize(shifted);  // a factor of no tangent
     if (factorized)
       break;
   }
@@ -118,46 +122,68 @@ ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const Spar
     : lcp_(lcp), k_(k), tangent_(tangent), c_transposed_(lcp.c->transpose()), limits_(limits) {}
 
 bool ReducedTangentEquations::factorize(const CholmodMatrix& tangent) {
-  const CholmodMatrix& kept = tangent_.factored;
-  const auto same = [](const auto* a, const auto* b, Eigen::Index size) {
-    return std::equal(a, a + size, b);
-  };
-  if (tangent_.cholesky.factorized() && kept.nonZeros() == tangent.nonZeros() &&
-      kept.rows() == tangent.rows() &&
-      same(kept.outerIndexPtr(), tangent.outerIndexPtr(), tangent.cols() + 1) &&
-      same(kept.innerIndexPtr(), tangent.innerIndexPtr(), tangent.nonZeros()) &&
-      same(kept.valuePtr(), tangent.valuePtr(), tangent.nonZeros())) {
-    ++reused_;
-    return true;
-  }
   // The tangent has K's pattern whenever each yield point couples blocks K couples; else
   // (never in the analysis) it is analyzed for its own pattern.
   if (tangent.nonZeros() != tangent_.cholesky.analyzed_nonzeros() ||
       tangent.nonZeros() != lcp_.k_lower->nonZeros())
     tangent_.cholesky.analyze(tangent, 6);
   ++factorizations_;
-  if (!tangent_.cholesky.factorize(tangent)) {
-    tangent_.factored = CholmodMatrix();
-    return false;
+  return tangent_.cholesky.factorize(tangent);
+}
+
+int ReducedTangentEquations::mode(Eigen::Index row) const {
+  Eigen::Index first = row;
+  while (first > 0 && group(first - 1) == group(row))
+    --first;
+  return static_cast<int>(row - first);
+}
+
+namespace {
+
+// S^-1 B, kSolveChunk columns at a time: a solve reads the whole factor once whatever the
+// number of its columns, but past a few dozen the right-hand sides fall out of cache
+// (BM_SolveColumns: at 10^4 blocks 16.7 ms for one column, 2.6 ms per column for 32, 5.9 for
+// 128).
+Eigen::MatrixXd solve_in_chunks(const SparseCholesky& s, const CholmodMatrix& b) {
+  Eigen::MatrixXd out(b.rows(), b.cols());
+  for (Eigen::Index c = 0; c < b.cols(); c += kSolveChunk) {
+    const Eigen::Index k = std::min<Eigen::Index>(kSolveChunk, b.cols() - c);
+    out.middleCols(c, k) = s.solve(Eigen::MatrixXd(b.middleCols(c, k)));
   }
-  tangent_.factored = tangent;
+  return out;
+}
+
+bool same_column(const SparseColumn& a, const SparseColumn& b) {
+  return a.nonZeros() == b.nonZeros() &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr()) &&
+         std::equal(a.valuePtr(), a.valuePtr() + a.nonZeros(), b.valuePtr());
+}
+
+bool same_term(const TangentTerm& a, const TangentTerm& b) {
+  if (a.group != b.group || a.modes != b.modes || a.n_local != b.n_local)
+    return false;
+  for (std::size_t i = 0; i < a.phi.size(); ++i)
+    if (!same_column(a.phi[i], b.phi[i]))
+      return false;
   return true;
 }
 
+}  // namespace
+
 std::optional<ReducedTangentEquations::Update> ReducedTangentEquations::update_from_kept(
-    const std::vector<Term>& terms) {
-  if (!kept_terms_ || !tangent_.cholesky.factorized())
+    const std::vector<TangentTerm>& terms) {
+  if (!tangent_.terms || !tangent_.cholesky.factorized())
     return std::nullopt;
   // The groups whose terms differ: the new term goes in, the kept one out.
-  std::map<Eigen::Index, const Term*> kept;
-  for (const Term& t : *kept_terms_)
-    kept.emplace(group(t.rows.front()), &t);
-  std::vector<const Term*> added;
-  std::vector<const Term*> removed;
-  for (const Term& t : terms) {
-    const auto it = kept.find(group(t.rows.front()));
+  std::map<Eigen::Index, const TangentTerm*> kept;
+  for (const TangentTerm& t : *tangent_.terms)
+    kept.emplace(t.group, &t);
+  std::vector<const TangentTerm*> added;
+  std::vector<const TangentTerm*> removed;
+  for (const TangentTerm& t : terms) {
+    const auto it = kept.find(t.group);
     if (it != kept.end()) {
-      const bool same = it->second->rows == t.rows && it->second->n_local == t.n_local;
+      const bool same = same_term(*it->second, t);
       if (!same)
         removed.push_back(it->second);
       kept.erase(it);
@@ -170,76 +196,105 @@ std::optional<ReducedTangentEquations::Update> ReducedTangentEquations::update_f
     removed.push_back(t);
   Eigen::Index r = 0;
   Eigen::Index r_removed = 0;
-  for (const Term* t : added)
-    r += static_cast<Eigen::Index>(t->rows.size());
-  for (const Term* t : removed)
-    r_removed += static_cast<Eigen::Index>(t->rows.size());
+  for (const TangentTerm* t : added)
+    r += static_cast<Eigen::Index>(t->modes.size());
+  for (const TangentTerm* t : removed)
+    r_removed += static_cast<Eigen::Index>(t->modes.size());
   r += r_removed;
   Update u;
   const Eigen::Index n = lcp_.k_lower->rows();
   if (r == 0)
     return u;  // the same tangent
-  // Worth it while the back-solves for the columns not kept cost less than half a
-  // factorization (a solve: ~4 flops per non-zero of the factor), and the columns kept take
-  // at most a quarter of the factor's memory (or 32 of them: a small factor is cheap).
+  // Worth it while the back-solves for the columns not kept cost less than a factorization in
+  // CHOLMOD's flop count (a solve: ~4 flops per non-zero of the factor; solved 32 at a time
+  // they run at 2-3 times a single solve's rate, so this is about a third of a factorization),
+  // and the columns kept take at most half the factor's memory (or 32 of them: a small factor
+  // is cheap). On the 10^4-block abutment a quarter of the memory and half the flops gave 86
+  // factorizations and 47 s of tangent work, these 67 and 43 s, twice both 43 and 62 s.
   const double factor_entries = static_cast<double>(tangent_.cholesky.factor_nonzeros());
   const double affordable = limits_.new_columns >= 0.0
                                 ? limits_.new_columns
-                                : 0.5 * tangent_.cholesky.factor_flops() / (4.0 * factor_entries);
+                                : tangent_.cholesky.factor_flops() / (4.0 * factor_entries);
   const auto columns =
       limits_.rows >= 0
           ? static_cast<std::size_t>(limits_.rows)
           : std::max<std::size_t>(
-                32, static_cast<std::size_t>(factor_entries / (4.0 * static_cast<double>(n))));
+                32, static_cast<std::size_t>(factor_entries / (2.0 * static_cast<double>(n))));
   if (r > kMostUpdatedRows || static_cast<std::size_t>(r) > columns)
     return std::nullopt;
-  // P, and D^-1 = diag(N_new, -N_old) block by block.
-  std::vector<Eigen::Index> p_rows;  // the row of each column of P
+  // P, and D^-1 = diag(N_new, -N_old) block by block; each column of P keyed by its group and
+  // mode.
+  std::vector<std::pair<Eigen::Index, int>> p_keys;
+  std::vector<const SparseColumn*> p_columns;
   Eigen::MatrixXd d_inverse = Eigen::MatrixXd::Zero(r, r);
-  auto put = [&](const Term& t, double sign) {
-    const auto k = static_cast<Eigen::Index>(t.rows.size());
-    const auto col = static_cast<Eigen::Index>(p_rows.size());
+  auto put = [&](const TangentTerm& t, double sign) {
+    const auto k = static_cast<Eigen::Index>(t.modes.size());
+    const auto col = static_cast<Eigen::Index>(p_keys.size());
     d_inverse.block(col, col, k, k) = sign * t.n_local;
-    p_rows.insert(p_rows.end(), t.rows.begin(), t.rows.end());
+    for (std::size_t i = 0; i < t.modes.size(); ++i) {
+      p_keys.emplace_back(t.group, t.modes[i]);
+      p_columns.push_back(&t.phi[i]);
+    }
   };
-  for (const Term* t : added)
+  for (const TangentTerm* t : added)
     put(*t, 1.0);
-  for (const Term* t : removed)
+  for (const TangentTerm* t : removed)
     put(*t, -1.0);
-  // The columns of Phi of a set of rows, as a sparse n x k matrix.
-  const auto phi_of = [&](const std::vector<Eigen::Index>& rows) {
+  // Columns of P: sparse n x k.
+  const auto columns_of = [&](const std::vector<std::size_t>& which) {
     std::vector<Eigen::Triplet<double, std::int64_t>> entries;
-    for (std::size_t c = 0; c < rows.size(); ++c)
-      for (CholmodMatrix::InnerIterator p(*lcp_.phi, rows[c]); p; ++p)
-        entries.emplace_back(p.row(), static_cast<std::int64_t>(c), p.value());
-    CholmodMatrix out(n, static_cast<Eigen::Index>(rows.size()));
+    for (std::size_t c = 0; c < which.size(); ++c)
+      for (SparseColumn::InnerIterator p(*p_columns[which[c]]); p; ++p)
+        entries.emplace_back(p.index(), static_cast<std::int64_t>(c), p.value());
+    CholmodMatrix out(n, static_cast<Eigen::Index>(which.size()));
     out.setFromTriplets(entries.begin(), entries.end());
     return out;
   };
-  u.p = phi_of(p_rows);
-  std::vector<Eigen::Index> missing;
-  for (Eigen::Index row : p_rows)
-    if (!kept_columns_.count(row) &&
-        std::find(missing.begin(), missing.end(), row) == missing.end())
-      missing.push_back(row);
-  if (kept_columns_.size() + missing.size() > columns) {
-    kept_columns_.clear();
-    missing = p_rows;
-    std::sort(missing.begin(), missing.end());
-    missing.erase(std::unique(missing.begin(), missing.end()), missing.end());
+  std::vector<std::size_t> all(p_keys.size());
+  for (std::size_t c = 0; c < all.size(); ++c)
+    all[c] = c;
+  u.p = columns_of(all);
+  // The columns of P not kept, or kept for another phi (the group's linearization moved), once
+  // each. (A key is in P at most twice: a group's old and new term, which differ.)
+  auto& kept_columns = tangent_.columns;
+  std::vector<std::size_t> missing;
+  std::map<std::pair<Eigen::Index, int>, std::size_t> solving;  // key -> place in `missing`
+  for (std::size_t c = 0; c < p_keys.size(); ++c) {
+    const auto it = kept_columns.find(p_keys[c]);
+    if (it != kept_columns.end() && same_column(it->second.phi, *p_columns[c]))
+      continue;
+    missing.push_back(c);
+  }
+  if (kept_columns.size() + missing.size() > columns) {
+    kept_columns.clear();
+    missing = all;
   }
   if (static_cast<double>(missing.size()) > affordable)
     return std::nullopt;
+  u.y.assign(p_keys.size(), nullptr);
   if (!missing.empty()) {
-    const Eigen::MatrixXd solved = tangent_.cholesky.solve(Eigen::MatrixXd(phi_of(missing)));
-    for (std::size_t c = 0; c < missing.size(); ++c)
-      kept_columns_[missing[c]] = solved.col(static_cast<Eigen::Index>(c));
+    const Eigen::MatrixXd solved = solve_in_chunks(tangent_.cholesky, columns_of(missing));
+    u.own.reserve(missing.size());  // u.y points into it
+    for (std::size_t k = 0; k < missing.size(); ++k) {
+      const std::size_t c = missing[k];
+      // A group's old and new terms share a key: such a column is held by the update only,
+      // so that no column another one points to is overwritten.
+      if (std::count(p_keys.begin(), p_keys.end(), p_keys[c]) > 1) {
+        u.own.push_back(solved.col(static_cast<Eigen::Index>(k)));
+        u.y[c] = &u.own.back();
+      } else {
+        TangentFactor::Column& kept_column = kept_columns[p_keys[c]];
+        kept_column = {*p_columns[c], solved.col(static_cast<Eigen::Index>(k))};
+        u.y[c] = &kept_column.solved;
+      }
+    }
   }
+  for (std::size_t c = 0; c < p_keys.size(); ++c)
+    if (u.y[c] == nullptr)
+      u.y[c] = &kept_columns.at(p_keys[c]).solved;
   Eigen::MatrixXd capacitance = d_inverse;
-  for (Eigen::Index c = 0; c < r; ++c) {
-    u.y.push_back(&kept_columns_.at(p_rows[static_cast<std::size_t>(c)]));
-    capacitance.col(c) -= u.p.transpose() * *u.y.back();
-  }
+  for (Eigen::Index c = 0; c < r; ++c)
+    capacitance.col(c) -= u.p.transpose() * *u.y[static_cast<std::size_t>(c)];
   capacitance = 0.5 * (capacitance + capacitance.transpose()).eval();
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(capacitance);
   if (eigen.info() != Eigen::Success)
@@ -293,7 +348,7 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
   }
   // N_AA^-1 group by group (the active rows of a group are consecutive in `active`).
   std::vector<Local> locals;
-  std::vector<Term> terms;
+  std::vector<TangentTerm> terms;
   for (std::size_t a = 0; a < active.size();) {
     std::size_t b = a;
     while (b < active.size() && group(active[b]) == group(active[a]))
@@ -311,9 +366,12 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     if (!(lu.rcond() > kSingularLocal))
       return out;
     locals.push_back(Local{a, lu.inverse()});
-    terms.push_back(Term{{active.begin() + static_cast<std::ptrdiff_t>(a),
-                          active.begin() + static_cast<std::ptrdiff_t>(b)},
-                         std::move(local)});
+    TangentTerm term{group(active[a]), {}, {}, std::move(local)};
+    for (std::size_t i = a; i < b; ++i) {
+      term.modes.push_back(mode(active[i]));
+      term.phi.emplace_back(lcp_.phi->col(active[i]));
+    }
+    terms.push_back(std::move(term));
     a = b;
   }
   // The kept factor, as it is or updated, else the lower triangle of K - Phi_A N_AA^-1 C_A
@@ -345,13 +403,13 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     CholmodMatrix plastic_lower(n, n);
     plastic_lower.setFromTriplets(plastic.begin(), plastic.end());
     const CholmodMatrix tangent = *lcp_.k_lower - plastic_lower;
-    kept_columns_.clear();
+    tangent_.columns.clear();
+    tangent_.terms.reset();
     if (!factorize(tangent)) {
-      kept_terms_.reset();
       out.ray = mechanism(tangent, active, locals);
       return out;
     }
-    kept_terms_ = std::move(terms);
+    tangent_.terms = std::move(terms);
   }
   const Update* through = update ? &*update : nullptr;
   // z_A with M_AA z_A = -v_A, through the tangent: S x = -Phi_A N_AA^-1 v_A, then
@@ -380,9 +438,9 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
         out.z(active[l.first + static_cast<std::size_t>(i)]) += z_local(i);
     }
   };
-  // Near a mechanism the tangent is ill-conditioned (K and the plastic part nearly cancel):
-  // one step of refinement on the LCP's own equations, its residual w_A measured with K.
-  // The damping D (z - center) is D z on the left and -D center in q.
+  // The result measured with K's own factor: w = q + N z - C K^-1 Phi z, and the residual of
+  // the active rows' equations, (M_AA + D) z_A + q_A - D center_A (the damping D (z - center)
+  // is D z on the left and -D center in q).
   Eigen::VectorXd d = Eigen::VectorXd::Zero(m);
   if (damped)
     for (std::size_t r = 0; r < active.size(); ++r)
@@ -390,19 +448,32 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
           damping.factor(static_cast<Eigen::Index>(r)) * lcp_.n->coeff(active[r], active[r]);
   const Eigen::VectorXd shifted_q =
       damped ? Eigen::VectorXd(q() - d.cwiseProduct(damping.center)) : q();
-  add_solution(shifted_q);
-  Eigen::VectorXd x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
-  add_solution(Eigen::VectorXd(shifted_q + *lcp_.n * out.z - *lcp_.c * x + d.cwiseProduct(out.z)));
-  x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
-  out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
-  out.w_scale =
-      q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();
-  if (through != nullptr && through->p.cols() > 0)
+  Eigen::VectorXd x;
+  auto measure = [&] {
+    x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
+    out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
+    out.w_scale =
+        q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();
+    double worst = 0.0;
     for (Eigen::Index i : active) {
       const double residual = out.w(i) + d(i) * (out.z(i) - (damped ? damping.center(i) : 0.0));
-      if (!(std::abs(residual) <= kUpdateAccuracy * out.w_scale(i)))
-        return std::nullopt;
+      worst = std::max(worst, std::abs(residual) / out.w_scale(i));
+      if (!(worst <= 1.0))  // NaN, or no digit right
+        return std::numeric_limits<double>::infinity();
     }
+    return worst;
+  };
+  add_solution(shifted_q);
+  double worst = measure();
+  // Near a mechanism the tangent is ill-conditioned (K and the plastic part nearly cancel):
+  // then one step of refinement on the LCP's own equations, its residual measured with K.
+  if (!(worst <= kSolveAccuracy)) {
+    add_solution(
+        Eigen::VectorXd(shifted_q + *lcp_.n * out.z - *lcp_.c * x + d.cwiseProduct(out.z)));
+    worst = measure();
+  }
+  if (through != nullptr && through->p.cols() > 0 && !(worst <= kSolveAccuracy))
+    return std::nullopt;
   out.regular = true;
   return out;
 }

@@ -17,11 +17,13 @@
 /// route). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
 /// independently of the tangent. An active set whose tangent differs from the factored one in
 /// a few groups is solved through that factor instead (Woodbury, see update_from_kept).
+#include <map>
 #include <optional>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
@@ -40,12 +42,34 @@ struct SplitLcp {
   std::vector<int> group_rank;             ///< per row: independent rows of its group at most
 };
 
+using SparseColumn = Eigen::SparseVector<double, Eigen::ColMajor, std::int64_t>;
+
+/// One group's part of a reduced tangent, Phi_g N_gg^-1 C_g: the columns of Phi of its active
+/// rows and their (damped) N_gg. A kept factor is described by its terms, so that a later LCP,
+/// whose rows are numbered otherwise, can tell how its own tangent differs from it.
+struct TangentTerm {
+  Eigen::Index group = 0;  ///< SplitLcp::group: the same yield point in every LCP
+  std::vector<int> modes;  ///< each active row's place among the rows of its group
+  std::vector<SparseColumn> phi;
+  Eigen::MatrixXd n_local;
+};
+
 /// The factor of the reduced tangent, kept from one LCP to the next: its symbolic analysis
-/// serves every active set, and its numeric factor the next LCP that asks for the same tangent
-/// (each candidate round starts from the active set the last round ended with).
+/// serves every active set, and its numeric factor the next LCPs whose tangents are the same
+/// or differ from it in a few groups (each candidate round starts from the active set the
+/// last one ended with, each increment from the last increment's).
 struct TangentFactor {
   SparseCholesky cholesky;
-  CholmodMatrix factored;  ///< the tangent `cholesky` holds the factor of (empty: none)
+  /// The tangent `cholesky` holds the factor of, as K minus these terms (empty: none).
+  std::optional<std::vector<TangentTerm>> terms;
+  /// S^-1 phi of the rows updates used, by group and mode (with the phi they were solved
+  /// for), kept while the factor is: the rows an update changes are much the same from one
+  /// active-set iteration to the next.
+  struct Column {
+    SparseColumn phi;
+    Eigen::VectorXd solved;
+  };
+  std::map<std::pair<Eigen::Index, int>, Column> columns;
 };
 
 /// How much the tangent of a solve may differ from the one whose factor is kept and still be
@@ -88,16 +112,10 @@ class ReducedTangentEquations final : public ActiveSetEquations {
  private:
   struct Local;
   struct Update;
-  /// The part of the tangent one group of active rows takes away: Phi_g N_gg^-1 C_g, kept as
-  /// its rows and the (damped) N_gg.
-  struct Term {
-    std::vector<Eigen::Index> rows;
-    Eigen::MatrixXd n_local;
-  };
   /// The solve of the new tangent through the kept factor of another one when they differ in
   /// few groups (S_new = S_kept - P D P^T, Woodbury), or nothing if they differ in too many or
   /// the new one is not positive definite.
-  [[nodiscard]] std::optional<Update> update_from_kept(const std::vector<Term>& terms);
+  [[nodiscard]] std::optional<Update> update_from_kept(const std::vector<TangentTerm>& terms);
   [[nodiscard]] Eigen::VectorXd solve_tangent(const Eigen::VectorXd& rhs,
                                               const Update* update) const;
   /// solve(), through a low-rank update of the kept factor if `may_update`; nothing if that
@@ -106,9 +124,10 @@ class ReducedTangentEquations final : public ActiveSetEquations {
                                                  const Damping& damping, bool may_update);
   [[nodiscard]] Eigen::VectorXd strain(const std::vector<Eigen::Index>& active, const Local& l,
                                        const Eigen::VectorXd& x) const;
-  /// Factorizes `tangent` unless the factor kept is of the same matrix; false if it is not
-  /// positive definite.
+  /// Factorizes `tangent`; false if it is not positive definite.
   [[nodiscard]] bool factorize(const CholmodMatrix& tangent);
+  /// The place of `row` among the rows of its group.
+  [[nodiscard]] int mode(Eigen::Index row) const;
   [[nodiscard]] Eigen::VectorXd mechanism(const CholmodMatrix& tangent,
                                           const std::vector<Eigen::Index>& active,
                                           const std::vector<Local>& locals);
@@ -118,12 +137,6 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   TangentFactor& tangent_;
   CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
   TangentUpdateLimits limits_;
-  // The tangent the kept factor is of, as K minus these terms, when this LCP made or confirmed
-  // it (the rows of another LCP are numbered otherwise).
-  std::optional<std::vector<Term>> kept_terms_;
-  // S_kept^-1 phi_r of the rows updates used, kept while the factor is: the rows an update
-  // changes are much the same from one active-set iteration to the next.
-  std::unordered_map<Eigen::Index, Eigen::VectorXd> kept_columns_;
   int factorizations_ = 0;
   int reused_ = 0;
   int updated_ = 0;

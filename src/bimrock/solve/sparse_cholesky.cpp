@@ -1,5 +1,6 @@
 #include <bimrock/solve/sparse_cholesky.hpp>
 
+#include <chrono>
 #include <stdexcept>
 #include <vector>
 
@@ -56,6 +57,10 @@ SparseCholesky::SparseCholesky() : impl_(std::make_unique<Impl>()) {}
 SparseCholesky::~SparseCholesky() = default;
 
 namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // The lower-triangular pattern of the graph of block_size x block_size blocks of `lower`.
 CholmodMatrix block_pattern(const CholmodMatrix& lower, int block_size) {
@@ -124,7 +129,10 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
   if (!impl_->factor)
     analyze(lower);
   cholmod_sparse a = Impl::view(lower);
+  const auto start = std::chrono::steady_clock::now();
   cholmod_l_factorize(&a, impl_->factor, &impl_->common);
+  ++work_.factorizations;
+  work_.factorize_seconds += seconds_since(start);
   if (impl_->common.status == CHOLMOD_OUT_OF_MEMORY)
     throw std::runtime_error("CHOLMOD factorize: out of memory");
   const auto minor = static_cast<std::int64_t>(impl_->factor->minor);
@@ -170,7 +178,10 @@ Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {
   if (!factorized_)
     throw std::logic_error("SparseCholesky::solve before a successful factorize");
   cholmod_dense rhs = Impl::view(b);
+  const auto start = std::chrono::steady_clock::now();
   cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, impl_->factor, &rhs, &impl_->common);
+  work_.solved_columns += b.cols();
+  work_.solve_seconds += seconds_since(start);
   if (!x)
     throw std::runtime_error("CHOLMOD solve failed");
   Eigen::MatrixXd out =

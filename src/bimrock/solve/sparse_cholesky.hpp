@@ -12,6 +12,14 @@ namespace bimrock {
 
 using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>;
 
+/// The work one factor object has done: where a solver's time goes (the bench reports it).
+struct CholeskyWork {
+  int factorizations = 0;
+  std::int64_t solved_columns = 0;  ///< right-hand sides, over all solves
+  double factorize_seconds = 0.0;
+  double solve_seconds = 0.0;
+};
+
 class SparseCholesky {
  public:
   SparseCholesky();
@@ -47,6 +55,8 @@ class SparseCholesky {
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
 
+  [[nodiscard]] const CholeskyWork& work() const { return work_; }
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
@@ -55,6 +65,7 @@ class SparseCholesky {
   std::int64_t failed_column_ = -1;
   double factor_flops_ = 0.0;
   bool factorized_ = false;
+  mutable CholeskyWork work_;
 };
 
 }  // namespace bimrock
