@@ -205,21 +205,22 @@ std::optional<ReducedTangentEquations::Update> ReducedTangentEquations::update_f
   const Eigen::Index n = lcp_.k_lower->rows();
   if (r == 0)
     return u;  // the same tangent
-  // Worth it while the back-solves for the columns not kept cost less than a factorization in
-  // CHOLMOD's flop count (a solve: ~4 flops per non-zero of the factor; solved 32 at a time
-  // they run at 2-3 times a single solve's rate, so this is about a third of a factorization),
-  // and the columns kept take at most half the factor's memory (or 32 of them: a small factor
-  // is cheap). On the 10^4-block abutment a quarter of the memory and half the flops gave 86
-  // factorizations and 47 s of tangent work, these 67 and 43 s, twice both 43 and 62 s.
+  // Worth it while the back-solves for the columns not kept cost less than half a factorization
+  // in CHOLMOD's flop count (a solve: ~4 flops per non-zero of the factor), and the columns
+  // kept take at most a quarter of the factor's memory (or 32 of them: a small factor is
+  // cheap). Measured on the 10^4-block abutment (LCP phase, one run each): these budgets 65 s
+  // (86 factorizations, 38 s of them, and 11 s of tangent solves); twice both 69 s (67: 30 s,
+  // 21 s); half the flops 67 s (44 s, 8 s). In the analysis a new column costs ~5 ms, more
+  // than the count says (few columns per update solve less well together).
   const double factor_entries = static_cast<double>(tangent_.cholesky.factor_nonzeros());
   const double affordable = limits_.new_columns >= 0.0
                                 ? limits_.new_columns
-                                : tangent_.cholesky.factor_flops() / (4.0 * factor_entries);
+                                : 0.5 * tangent_.cholesky.factor_flops() / (4.0 * factor_entries);
   const auto columns =
       limits_.rows >= 0
           ? static_cast<std::size_t>(limits_.rows)
           : std::max<std::size_t>(
-                32, static_cast<std::size_t>(factor_entries / (2.0 * static_cast<double>(n))));
+                32, static_cast<std::size_t>(factor_entries / (4.0 * static_cast<double>(n))));
   if (r > kMostUpdatedRows || static_cast<std::size_t>(r) > columns)
     return std::nullopt;
   // P, and D^-1 = diag(N_new, -N_old) block by block; each column of P keyed by its group and
