@@ -33,7 +33,9 @@ struct ChainLcp {
   SparseCholesky k;
 };
 
-void make_chain(int blocks, unsigned seed, ChainLcp& out) {
+// With `uncoupled` >= 1, K leaves out the springs of that point, which then couples blocks K
+// does not (its C is a tenth of its springs', so that M stays positive definite).
+void make_chain(int blocks, unsigned seed, ChainLcp& out, int uncoupled = -1) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> stiffness(1.0, 3.0);
   const int dofs = 6 * blocks;
@@ -49,8 +51,9 @@ void make_chain(int blocks, unsigned seed, ChainLcp& out) {
     const MatrixXd e = testing::random_matrix(2, width, rng);
     const Eigen::Vector2d d(stiffness(rng), stiffness(rng));
     const MatrixXd a = testing::random_matrix(2, 2, rng) + 2.0 * MatrixXd::Identity(2, 2);
-    k.block(first, first, width, width) += e.transpose() * d.asDiagonal() * e;
-    c.block(2 * p, first, 2, width) = a * d.asDiagonal() * e;
+    if (p != uncoupled)
+      k.block(first, first, width, width) += e.transpose() * d.asDiagonal() * e;
+    c.block(2 * p, first, 2, width) = (p == uncoupled ? 0.1 : 1.0) * a * d.asDiagonal() * e;
     n.block(2 * p, 2 * p, 2, 2) = a * d.asDiagonal() * a.transpose();
   }
   out.k_lower = k.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
@@ -113,6 +116,21 @@ TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
   EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
   EXPECT_EQ(equations.factorizations(), 1);
+}
+
+TEST(ReducedTangent, ATermOutsideThePatternOfKIsAddedWithAPatternOfItsOwn) {
+  // The tangent is formed in K's pattern; point 6 couples blocks 5 and 6, which K does not.
+  ChainLcp chain;
+  make_chain(12, 19, chain, /*uncoupled=*/6);
+  ASSERT_EQ(chain.k_lower.coeff(6 * 6, 6 * 5 + 1), 0.0);  // no block 5-6 entry in K
+  TangentFactor tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent);
+  const std::vector<Eigen::Index> active = {2, 3, 8, 12, 13, 20};  // points 1, 4, 6, 10
+  const ActiveSetEquations::Solution s = equations.solve(active);
+  ASSERT_TRUE(s.regular);
+  EXPECT_GT(tangent.matrix.nonZeros(), chain.k_lower.nonZeros());
+  const VectorXd z = dense_solution(chain, active, {});
+  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
 }
 
 TEST(ReducedTangent, ReusesTheKeptFactorOnlyForTheSameTangent) {

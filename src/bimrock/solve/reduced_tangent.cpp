@@ -170,6 +170,59 @@ bool same_term(const TangentTerm& a, const TangentTerm& b) {
 
 }  // namespace
 
+const CholmodMatrix& ReducedTangentEquations::form_tangent(const std::vector<Eigen::Index>& active,
+                                                           const std::vector<Local>& locals) {
+  const CholmodMatrix& k = *lcp_.k_lower;
+  CholmodMatrix& t = tangent_.matrix;
+  const bool k_pattern =
+      t.rows() == k.rows() && t.nonZeros() == k.nonZeros() &&
+      std::equal(k.outerIndexPtr(), k.outerIndexPtr() + k.cols() + 1, t.outerIndexPtr()) &&
+      std::equal(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros(), t.innerIndexPtr());
+  if (k_pattern)
+    std::copy(k.valuePtr(), k.valuePtr() + k.nonZeros(), t.valuePtr());
+  else
+    t = k;
+  // Each term Phi_g N_gg^-1 C_g of the lower triangle, subtracted where it falls; a term outside
+  // K's pattern (a yield point coupling blocks K does not: never in the analysis) is gathered
+  // and added with a pattern of its own.
+  std::vector<Eigen::Triplet<double, std::int64_t>> outside;
+  const std::int64_t* outer = t.outerIndexPtr();
+  const std::int64_t* inner = t.innerIndexPtr();
+  double* values = t.valuePtr();
+  for (const Local& l : locals) {
+    const Eigen::Index r = l.inverse.rows();
+    for (Eigen::Index i = 0; i < r; ++i) {
+      const Eigen::Index row_i = active[l.first + static_cast<std::size_t>(i)];
+      for (Eigen::Index j = 0; j < r; ++j) {
+        const double coefficient = l.inverse(i, j);
+        if (coefficient == 0.0)
+          continue;
+        const Eigen::Index row_j = active[l.first + static_cast<std::size_t>(j)];
+        for (CholmodMatrix::InnerIterator c(c_transposed_, row_j); c; ++c) {
+          const std::int64_t* begin = inner + outer[c.row()];
+          const std::int64_t* end = inner + outer[c.row() + 1];
+          for (CholmodMatrix::InnerIterator p(*lcp_.phi, row_i); p; ++p) {
+            if (p.row() < c.row())
+              continue;
+            const double term = p.value() * coefficient * c.value();
+            const std::int64_t* at = std::lower_bound(begin, end, p.row());
+            if (at != end && *at == p.row())
+              values[at - inner] -= term;
+            else
+              outside.emplace_back(p.row(), c.row(), -term);
+          }
+        }
+      }
+    }
+  }
+  if (!outside.empty()) {
+    CholmodMatrix extra(t.rows(), t.cols());
+    extra.setFromTriplets(outside.begin(), outside.end());
+    t = CholmodMatrix(t + extra);
+  }
+  return t;
+}
+
 std::optional<ReducedTangentEquations::Update> ReducedTangentEquations::update_from_kept(
     const std::vector<TangentTerm>& terms) {
   if (!tangent_.terms || !tangent_.cholesky.factorized())
@@ -384,26 +437,7 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
   } else if (update) {
     ++updated_;
   } else {
-    std::vector<Eigen::Triplet<double, std::int64_t>> plastic;
-    for (const Local& l : locals) {
-      const Eigen::Index r = l.inverse.rows();
-      for (Eigen::Index i = 0; i < r; ++i) {
-        const Eigen::Index row_i = active[l.first + static_cast<std::size_t>(i)];
-        for (Eigen::Index j = 0; j < r; ++j) {
-          const double coefficient = l.inverse(i, j);
-          if (coefficient == 0.0)
-            continue;
-          const Eigen::Index row_j = active[l.first + static_cast<std::size_t>(j)];
-          for (CholmodMatrix::InnerIterator p(*lcp_.phi, row_i); p; ++p)
-            for (CholmodMatrix::InnerIterator c(c_transposed_, row_j); c; ++c)
-              if (p.row() >= c.row())
-                plastic.emplace_back(p.row(), c.row(), p.value() * coefficient * c.value());
-        }
-      }
-    }
-    CholmodMatrix plastic_lower(n, n);
-    plastic_lower.setFromTriplets(plastic.begin(), plastic.end());
-    const CholmodMatrix tangent = *lcp_.k_lower - plastic_lower;
+    const CholmodMatrix& tangent = form_tangent(active, locals);
     tangent_.columns.clear();
     tangent_.terms.reset();
     if (!factorize(tangent)) {

@@ -60,6 +60,8 @@ struct TangentTerm {
 /// last one ended with, each increment from the last increment's).
 struct TangentFactor {
   SparseCholesky cholesky;
+  /// The last tangent formed (lower triangle): K's pattern, its values overwritten each time.
+  CholmodMatrix matrix;
   /// The tangent `cholesky` holds the factor of, as K minus these terms (empty: none).
   std::optional<std::vector<TangentTerm>> terms;
   /// S^-1 phi of the rows updates used, by group and mode (with the phi they were solved
@@ -124,6 +126,9 @@ class ReducedTangentEquations final : public ActiveSetEquations {
                                                  const Damping& damping, bool may_update);
   [[nodiscard]] Eigen::VectorXd strain(const std::vector<Eigen::Index>& active, const Local& l,
                                        const Eigen::VectorXd& x) const;
+  /// K - Phi_A N_AA^-1 C_A (lower triangle), formed in TangentFactor::matrix.
+  [[nodiscard]] const CholmodMatrix& form_tangent(const std::vector<Eigen::Index>& active,
+                                                  const std::vector<Local>& locals);
   /// Factorizes `tangent`; false if it is not positive definite.
   [[nodiscard]] bool factorize(const CholmodMatrix& tangent);
   /// The place of `row` among the rows of its group.
