@@ -60,6 +60,13 @@ TEST(SparseCholesky, SolvesToRoundOffWithEitherKindOfFactor) {
     const Eigen::VectorXd x = k.solve(b);
     const Eigen::VectorXd residual = lower.selfadjointView<Eigen::Lower>() * x - b;
     EXPECT_LE(residual.norm(), 1e-12 * lower.norm() * x.norm()) << side << " blocks a side";
+    // Three right-hand sides at once, each solved as alone; the work counted.
+    const Eigen::MatrixXd b3 = testing::random_matrix(lower.rows(), 3, rng);
+    const Eigen::MatrixXd x3 = k.solve(b3);
+    for (Eigen::Index c = 0; c < 3; ++c)
+      EXPECT_LE((x3.col(c) - k.solve(Eigen::VectorXd(b3.col(c)))).norm(), 1e-12 * x3.norm());
+    EXPECT_EQ(k.work().factorizations, 1);
+    EXPECT_EQ(k.work().solved_columns, 1 + 3 + 3);
   }
 }
 

@@ -308,11 +308,10 @@ std::optional<ReducedTangentEquations::Update> ReducedTangentEquations::update_f
   for (std::size_t c = 0; c < all.size(); ++c)
     all[c] = c;
   u.p = columns_of(all);
-  // The columns of P not kept, or kept for another phi (the group's linearization moved), once
-  // each. (A key is in P at most twice: a group's old and new term, which differ.)
+  // The columns of P not kept, or kept for another phi (the group's linearization moved). A
+  // key is in P at most twice: a group's old and new terms, which differ.
   auto& kept_columns = tangent_.columns;
   std::vector<std::size_t> missing;
-  std::map<std::pair<Eigen::Index, int>, std::size_t> solving;  // key -> place in `missing`
   for (std::size_t c = 0; c < p_keys.size(); ++c) {
     const auto it = kept_columns.find(p_keys[c]);
     if (it != kept_columns.end() && same_column(it->second.phi, *p_columns[c]))
