@@ -33,7 +33,7 @@ struct ChainLcp {
   SparseCholesky k;
 };
 
-// With `uncoupled` >= 1, K leaves out the springs of that point, which then couples blocks K
+// With `uncoupled` >= 0, K leaves out the springs of that point, which then couples blocks K
 // does not (its C is a tenth of its springs', so that M stays positive definite).
 void make_chain(int blocks, unsigned seed, ChainLcp& out, int uncoupled = -1) {
   std::mt19937 rng(seed);
@@ -73,26 +73,32 @@ void make_chain(int blocks, unsigned seed, ChainLcp& out, int uncoupled = -1) {
 
 // The second method: (M_AA + D) z_A = -q_A + D center_A with D = factor N_rr (no damping:
 // M_AA z_A = -q_A), formed densely and solved by LU; z = 0 off A.
-VectorXd dense_solution(const ChainLcp& chain, const std::vector<Eigen::Index>& active,
+VectorXd dense_solution(const MatrixXd& m_dense, const CholmodMatrix& n, const VectorXd& q,
+                        const std::vector<Eigen::Index>& active,
                         const ActiveSetEquations::Damping& damping) {
   const auto k = static_cast<Eigen::Index>(active.size());
   MatrixXd a(k, k);
   VectorXd rhs(k);
   for (Eigen::Index i = 0; i < k; ++i) {
     for (Eigen::Index j = 0; j < k; ++j)
-      a(i, j) = chain.m_dense(active[i], active[j]);
-    rhs(i) = -chain.split.q(active[i]);
+      a(i, j) = m_dense(active[i], active[j]);
+    rhs(i) = -q(active[i]);
     if (damping.factor.size() > 0) {
-      const double d = damping.factor(i) * chain.n.coeff(active[i], active[i]);
+      const double d = damping.factor(i) * n.coeff(active[i], active[i]);
       a(i, i) += d;
       rhs(i) += d * damping.center(active[i]);
     }
   }
   const VectorXd za = a.partialPivLu().solve(rhs);
-  VectorXd z = VectorXd::Zero(chain.split.q.size());
+  VectorXd z = VectorXd::Zero(q.size());
   for (Eigen::Index i = 0; i < k; ++i)
     z(active[i]) = za(i);
   return z;
+}
+
+VectorXd dense_solution(const ChainLcp& chain, const std::vector<Eigen::Index>& active,
+                        const ActiveSetEquations::Damping& damping) {
+  return dense_solution(chain.m_dense, chain.n, chain.split.q, active, damping);
 }
 
 // Rows first, first + step, ... below size: an active set.
@@ -275,19 +281,7 @@ TEST(ReducedTangent, ALaterLcpIsSolvedThroughTheFactorAnEarlierOneKept) {
     ASSERT_TRUE(s.regular);
     EXPECT_EQ(round2.factorizations(), 0) << scale;
     EXPECT_EQ(round2.updated_factors(), 1) << scale;
-    const auto k = static_cast<Eigen::Index>(active.size());
-    MatrixXd a(k, k);
-    VectorXd rhs(k);
-    for (Eigen::Index i = 0; i < k; ++i) {
-      rhs(i) = -sub.split.q(active[static_cast<std::size_t>(i)]);
-      for (Eigen::Index j = 0; j < k; ++j)
-        a(i, j) =
-            sub.m_dense(active[static_cast<std::size_t>(i)], active[static_cast<std::size_t>(j)]);
-    }
-    const VectorXd za = a.partialPivLu().solve(rhs);
-    VectorXd z = VectorXd::Zero(sub.split.q.size());
-    for (Eigen::Index i = 0; i < k; ++i)
-      z(active[static_cast<std::size_t>(i)]) = za(i);
+    const VectorXd z = dense_solution(sub.m_dense, sub.n, sub.split.q, active, {});
     const VectorXd w = sub.m_dense * z + sub.split.q;
     EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff()) << scale;
     EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff()) << scale;

@@ -491,9 +491,12 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     double worst = 0.0;
     for (Eigen::Index i : active) {
       const double residual = out.w(i) + d(i) * (out.z(i) - (damped ? damping.center(i) : 0.0));
-      worst = std::max(worst, std::abs(residual) / out.w_scale(i));
-      if (!(worst <= 1.0))  // NaN, or no digit right
+      if (residual == 0.0)
+        continue;  // also where the row's scale is 0
+      const double relative = std::abs(residual) / out.w_scale(i);
+      if (std::isnan(relative))
         return std::numeric_limits<double>::infinity();
+      worst = std::max(worst, relative);
     }
     return worst;
   };
