@@ -28,7 +28,7 @@ namespace {
 /// are a mechanism resolved only by round-off (see try_increment).
 constexpr double kMechanismRatio = 1e6;
 /// Candidates within the margin of yield (PlasticOptions::candidate_margin), at most this many
-/// per point that reaches it.
+/// per point that reaches it (or, in a later round, per violated point added).
 constexpr std::size_t kNearPerReached = 2;
 /// Where a collapse certificate bounds the collapse load, the bisection's trials go this far
 /// towards the bound (each carried one shrinks the bracket tenfold) until one fails.
@@ -159,14 +159,41 @@ Eigen::VectorXd local_of(const Model& model, const YieldPoint& p, const Eigen::V
   return local_stiffness(model, p) * local_strain(model, p, du);
 }
 
+// Marks as candidates the points not yet candidates whose yield functions f reach tol within
+// `margin` times their `change` (modes where it is positive), nearest first, at most `most`.
+void join_nearest(const std::vector<Eigen::VectorXd>& f, const std::vector<Eigen::VectorXd>& change,
+                  double tol, double margin, std::size_t most, std::vector<char>& candidate) {
+  std::vector<std::pair<double, std::size_t>> near;  // (margin it needs, point)
+  for (std::size_t p = 0; p < candidate.size(); ++p) {
+    if (candidate[p])
+      continue;
+    double needed = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < f[p].size(); ++i)
+      if (change[p](i) > 0.0)
+        needed = std::min(needed, (tol - f[p](i)) / change[p](i));
+    if (needed < margin)
+      near.emplace_back(needed, p);
+  }
+  const std::size_t keep = std::min(near.size(), most);
+  std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end());
+  for (std::size_t k = 0; k < keep; ++k)
+    candidate[near[k].second] = 1;
+}
+
 // The largest violation of any yield function (unscaled, in Pa) and the points that violate
 // them by more than tol.
 double check_all_yield_functions(const StageContext& ctx, const AnalysisState& s, double tol,
-                                 std::vector<int>& violators) {
+                                 std::vector<int>& violators,
+                                 std::vector<Eigen::VectorXd>* all = nullptr) {
   double worst = -std::numeric_limits<double>::infinity();
+  if (all != nullptr)
+    all->resize(ctx.points.size());
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
     const Eigen::VectorXd stress = local_stress(ctx.model, ctx.points[p], s.points[p], s.u);
-    const double f = linearize(ctx.model, ctx.points[p], s.points[p], stress).f.maxCoeff();
+    Eigen::VectorXd fs = linearize(ctx.model, ctx.points[p], s.points[p], stress).f;
+    const double f = fs.maxCoeff();
+    if (all != nullptr)
+      (*all)[p] = std::move(fs);
     worst = std::max(worst, f);
     if (f > tol)
       violators.push_back(static_cast<int>(p));
@@ -250,28 +277,17 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   }
   const double tol = opt.yield_tolerance * std::max(scale, 1.0);
   std::vector<char> candidate(ctx.points.size(), 0);
-  std::vector<std::pair<double, std::size_t>> near;  // (margin it needs, point)
   std::size_t reached = 0;
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
     if (s.points[p].gap > 0.0 || predicted_f[p].maxCoeff() > tol) {
       candidate[p] = 1;
       ++reached;
-      continue;
     }
-    double needed = std::numeric_limits<double>::infinity();
-    for (Eigen::Index i = 0; i < predicted_f[p].size(); ++i)
-      if (change_f[p](i) > 0.0)
-        needed = std::min(needed, (tol - predicted_f[p](i)) / change_f[p](i));
-    if (needed < opt.candidate_margin)
-      near.emplace_back(needed, p);
   }
-  // The nearest first, and no more than kNearPerReached for each point that reaches yield: a
-  // large step from an unloaded state (a stage's first) brings nearly every point within the
-  // margin.
-  const std::size_t keep = std::min(near.size(), kNearPerReached * reached);
-  std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end());
-  for (std::size_t k = 0; k < keep; ++k)
-    candidate[near[k].second] = 1;
+  // No more than kNearPerReached for each point that reaches yield: a large step from an
+  // unloaded state (a stage's first) brings nearly every point within the margin.
+  join_nearest(predicted_f, change_f, tol, opt.candidate_margin, kNearPerReached * reached,
+               candidate);
   clock.lap("increments: candidates");
 
   // The warm start: the rows that yielded in the last increment, then those of the last round
@@ -426,18 +442,31 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     update_state(sys, lambda, z, ctx.points, t.next);
     // check_all_yield_functions: add the violated points that were not in the LCP.
     std::vector<int> violators;
-    check_all_yield_functions(ctx, t.next, tol, violators);
+    std::vector<Eigen::VectorXd> f_next;
+    check_all_yield_functions(ctx, t.next, tol, violators, &f_next);
     clock.lap("increments: update and check");
-    bool added = false;
+    std::size_t added = 0;
     for (int p : violators) {
-      if (!candidate[p])
-        candidate[p] = added = true;
+      if (!candidate[p]) {
+        candidate[p] = 1;
+        ++added;
+      }
+    }
+    if (added > 0) {
+      // The next round's flow spreads further: the points this round's plastic flow moved
+      // towards yield (f - f_predicted, the change the elastic predictor did not foresee)
+      // join it where that change, candidate_margin times over, reaches yield.
+      std::vector<Eigen::VectorXd> flow_f(ctx.points.size());
+      for (std::size_t p = 0; p < ctx.points.size(); ++p)
+        if (!candidate[p])
+          flow_f[p] = f_next[p] - predicted_f[p];
+      join_nearest(f_next, flow_f, tol, opt.candidate_margin, kNearPerReached * added, candidate);
     }
     warm_rows.clear();
     for (int r = 0; r < m; ++r)
       if (lambda(r) != 0.0 || z(r) > 0.0)
         warm_rows.insert({sys.rows[r].point, sys.rows[r].mode});
-    if (!added) {
+    if (added == 0) {
       solvers.last_active = std::move(warm_rows);
       t.rows = sys.rows;
       t.lambda = lambda;
