@@ -29,6 +29,8 @@
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/working_set_lcp.hpp>
 
+#include "bimrock/app/openmp_environment.hpp"
+
 #include "model_lcps.hpp"
 #include "siconos_lcp.hpp"
 
@@ -202,6 +204,7 @@ bool report(const ModelLcp& lcp, int repetitions, bool equilibrate) {
 }  // namespace bimrock::bench
 
 int main(int argc, char** argv) {
+  bimrock::ensure_openmp_environment(argv);
   using namespace bimrock::bench;
   const Options o = parse(argc, argv);
   std::printf(

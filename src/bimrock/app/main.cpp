@@ -16,7 +16,7 @@
 
 #include "bimrock/app/bench_command.hpp"
 #include "bimrock/app/mesh_command.hpp"
-#include "bimrock/app/openmp_wait_policy.hpp"
+#include "bimrock/app/openmp_environment.hpp"
 #include "bimrock/app/report.hpp"
 
 namespace {
@@ -69,7 +69,7 @@ int check(const std::string& case_file, bool quiet) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  bimrock::ensure_passive_openmp_wait(argv);
+  bimrock::ensure_openmp_environment(argv);
   CLI::App app{"bimrock: block-interfaces model of jointed rock masses (SI units)"};
   app.require_subcommand(1);
   bool quiet = false;
