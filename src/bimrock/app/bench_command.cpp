@@ -129,10 +129,13 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
           if (std::getenv("BIMROCK_BENCH_VERBOSE"))
             fmt::print(stderr,
                        "  stage {} inc {} factor {:.4f} lcp {} yielding {} open {} as-it {} "
-                       "tangent {} pivots {} rounds {} {:.3f} s\n",
+                       "tangent {} pivots {} rounds {} {:.3f} s, growth now {:.0f} MiB, peak "
+                       "{:.0f} MiB\n",
                        r.stage, r.increment, r.stage_factor, r.lcp_size, r.yielding_points,
                        r.open_points, r.active_set_iterations, r.tangent_factorizations, r.pivots,
-                       r.rounds, r.seconds);
+                       r.rounds, r.seconds,
+                       (static_cast<double>(current_memory_bytes()) - before) / 1048576.0,
+                       (static_cast<double>(peak_memory_bytes()) - before) / 1048576.0);
           writing += seconds_since(w);
         });
     run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
