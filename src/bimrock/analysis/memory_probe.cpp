@@ -3,6 +3,8 @@
 #include <fstream>
 #include <string>
 
+#include <malloc.h>
+
 namespace bimrock {
 
 namespace {
@@ -28,6 +30,10 @@ void reset_peak_memory() {
 
 std::int64_t peak_memory_bytes() {
   return status_field("VmHWM");
+}
+
+void release_free_memory() {
+  malloc_trim(0);
 }
 
 std::int64_t current_memory_bytes() {
