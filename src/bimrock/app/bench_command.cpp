@@ -16,6 +16,7 @@
 #include <bimrock/analysis/memory_probe.hpp>
 #include <bimrock/analysis/plastic_analysis.hpp>
 #include <bimrock/assembly/global_system.hpp>
+#include <bimrock/assembly/yield_points.hpp>
 #include <bimrock/io/line_plot.hpp>
 #include <bimrock/io/results_writer.hpp>
 #include <bimrock/model/reference_cases.hpp>
@@ -110,6 +111,32 @@ Run run_elastic(int n, const fs::path& scratch) {
   return run;
 }
 
+// The plastic zone: the blocks of every point that has yielded or opened so far, and how many
+// of them border a block outside it (what a static condensation onto the zone would leave
+// dense; docs/performance.md, session 11).
+std::pair<int, int> plastic_zone(const Model& model, const std::vector<YieldPoint>& points,
+                                 const AnalysisState& st) {
+  std::vector<char> in(static_cast<std::size_t>(model.n_blocks()), 0);
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const PlasticState& s = st.points[p];
+    if (s.slip == 0.0 && s.gap == 0.0 && s.plastic.isZero(0.0))
+      continue;
+    in[static_cast<std::size_t>(points[p].block_i)] = 1;
+    if (points[p].is_interface() && points[p].block_j != kGround)
+      in[static_cast<std::size_t>(points[p].block_j)] = 1;
+  }
+  std::vector<char> boundary(in.size(), 0);
+  for (const Interface& f : model.interfaces) {
+    if (f.is_support())
+      continue;
+    const auto i = static_cast<std::size_t>(f.block_i), j = static_cast<std::size_t>(f.block_j);
+    if (in[i] != in[j])
+      boundary[in[i] ? i : j] = 1;
+  }
+  return {static_cast<int>(std::count(in.begin(), in.end(), 1)),
+          static_cast<int>(std::count(boundary.begin(), boundary.end(), 1))};
+}
+
 Run run_plastic(int n, int increments, const fs::path& scratch) {
   Run run;
   release_free_memory();
@@ -123,22 +150,27 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
   options.track_memory = true;
   double writing = 0.0;
   PlasticResult result;
+  std::vector<YieldPoint> points;  // for the verbose lines only
   {
     PlasticResultsWriter writer(model, {}, scratch / "plastic");
     result = run_plastic_analysis(
         model, options, [&](const IncrementRecord& r, const AnalysisState& st) {
           const auto w = Clock::now();
           writer.on_increment(r, st);
-          if (std::getenv("BIMROCK_BENCH_VERBOSE"))
-            fmt::print(stderr,
-                       "  stage {} inc {} factor {:.4f} lcp {} yielding {} open {} as-it {} "
-                       "tangent {} pivots {} rounds {} {:.3f} s, growth now {:.0f} MiB, peak "
-                       "{:.0f} MiB\n",
-                       r.stage, r.increment, r.stage_factor, r.lcp_size, r.yielding_points,
-                       r.open_points, r.active_set_iterations, r.tangent_factorizations, r.pivots,
-                       r.rounds, r.seconds,
-                       (static_cast<double>(current_memory_bytes()) - before) / 1048576.0,
-                       (static_cast<double>(peak_memory_bytes()) - before) / 1048576.0);
+          if (std::getenv("BIMROCK_BENCH_VERBOSE")) {
+            if (points.empty())
+              points = make_yield_points(model);
+            const auto [zone, boundary] = plastic_zone(model, points, st);
+            fmt::print(
+                stderr,
+                "  stage {} inc {} factor {:.4f} lcp {} yielding {} open {} as-it {} "
+                "tangent {} pivots {} rounds {} {:.3f} s, growth now {:.0f} MiB, peak "
+                "{:.0f} MiB, plastic zone {} blocks ({} on its boundary)\n",
+                r.stage, r.increment, r.stage_factor, r.lcp_size, r.yielding_points, r.open_points,
+                r.active_set_iterations, r.tangent_factorizations, r.pivots, r.rounds, r.seconds,
+                (static_cast<double>(current_memory_bytes()) - before) / 1048576.0,
+                (static_cast<double>(peak_memory_bytes()) - before) / 1048576.0, zone, boundary);
+          }
           writing += seconds_since(w);
         });
     run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
@@ -249,9 +281,8 @@ nlohmann::json to_json(const Row& r) {
           {"time_ratio", r.total / r.limit},
           {"whole_peak_bytes", r.run_peak},
           {"limit_peak_bytes", r.limit_peak},
-          {"memory_ratio",
-           mib(r.limit_peak) >= 1.0 ? nlohmann::json(r.run_peak / r.limit_peak)
-                                    : nlohmann::json()}};
+          {"memory_ratio", mib(r.limit_peak) >= 1.0 ? nlohmann::json(r.run_peak / r.limit_peak)
+                                                    : nlohmann::json()}};
 }
 
 void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
