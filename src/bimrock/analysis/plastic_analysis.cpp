@@ -588,7 +588,19 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     std::optional<Trial> last;
     int increment = 0;
     for (int n = 0; n < stage.increments; ++n) {
-      const auto start = std::chrono::steady_clock::now();
+      auto part_start = std::chrono::steady_clock::now();
+      // Records a carried trial (a whole increment or one part of it) with the time since the
+      // last part: the parts' times add up, none counts another's (nor the callback's).
+      auto finish = [&](const Trial& carried) {
+        const double secs =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - part_start).count();
+        result.state = carried.next;
+        result.history.push_back(record(model, carried, st, ++increment, secs));
+        if (on_increment)
+          on_increment(result.history.back(), result.state);
+        last = carried;
+        part_start = std::chrono::steady_clock::now();
+      };
       Trial t = try_increment(ctx, result.state, step, opt, solvers);
       // A softening law that reaches its residual value inside the step: stop the step there
       // and carry the rest as a further step (the laws are linear on each side of the kink).
@@ -598,25 +610,10 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         if (to_kink.status != Trial::Status::carried)
           break;
         const double done = to_kink.next.stage_factor - result.state.stage_factor;
-        result.state = to_kink.next;
-        result.history.push_back(record(
-            model, to_kink, st, ++increment,
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()));
-        if (on_increment)
-          on_increment(result.history.back(), result.state);
-        last = to_kink;
+        finish(to_kink);
         rest = stage.control ? rest * (1.0 - t.kink) : rest - done;
         t = try_increment(ctx, result.state, rest, opt, solvers);
       }
-      auto finish = [&](const Trial& carried) {
-        const double secs =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        result.state = carried.next;
-        result.history.push_back(record(model, carried, st, ++increment, secs));
-        if (on_increment)
-          on_increment(result.history.back(), result.state);
-        last = carried;
-      };
       if (t.status == Trial::Status::carried) {
         finish(t);
         continue;

@@ -67,7 +67,7 @@ struct IncrementRecord {
   int active_set_iterations = 0;   ///< solves of the active-set method (dense or tangent)
   int tangent_factorizations = 0;  ///< of them, on the sparse reduced tangent
   int rounds = 0;                  ///< LCP solves (candidate rounds) of the increment
-  double seconds = 0.0;
+  double seconds = 0.0;            ///< since the last record (failed trials included) [s]
 };
 
 /// One active yield mode of a collapse mechanism.
