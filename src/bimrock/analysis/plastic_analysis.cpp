@@ -561,7 +561,9 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.points = make_yield_points(model);
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
-  // The columns kept may take as much memory as the factor of K itself.
+  // The columns kept may take 12 bytes per entry of K's factor, 1.5 times the factor's values:
+  // they set the peak of the dense route's increments (a third of it costs 2.5x the columns'
+  // time at 10^4 blocks for 10% less peak; docs/performance.md, sessions 10 and 11).
   LcpSolvers solvers(
       FlexibilityColumns(k, std::max<std::int64_t>(64 << 20, 12 * k.factor_nonzeros())));
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
