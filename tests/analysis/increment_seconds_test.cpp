@@ -5,6 +5,8 @@
 // Source of the expected bound: a conservation law. Disjoint intervals inside one call add up
 // to no more than the call's wall-clock time.
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
