@@ -160,17 +160,20 @@ Eigen::VectorXd local_of(const Model& model, const YieldPoint& p, const Eigen::V
 }
 
 // Marks as candidates the points not yet candidates whose yield functions f reach tol within
-// `margin` times their `change` (modes where it is positive), nearest first, at most `most`.
-void join_nearest(const std::vector<Eigen::VectorXd>& f, const std::vector<Eigen::VectorXd>& change,
-                  double tol, double margin, std::size_t most, std::vector<char>& candidate) {
+// `margin` times their change (`change(p)`: a vector or an Eigen expression; modes where it is
+// positive), nearest first, at most `most`.
+template <class Change>
+void join_nearest(const std::vector<Eigen::VectorXd>& f, const Change& change, double tol,
+                  double margin, std::size_t most, std::vector<char>& candidate) {
   std::vector<std::pair<double, std::size_t>> near;  // (margin it needs, point)
   for (std::size_t p = 0; p < candidate.size(); ++p) {
     if (candidate[p])
       continue;
+    decltype(auto) df = change(p);  // a reference or an expression: no copy
     double needed = std::numeric_limits<double>::infinity();
     for (Eigen::Index i = 0; i < f[p].size(); ++i)
-      if (change[p](i) > 0.0)
-        needed = std::min(needed, (tol - f[p](i)) / change[p](i));
+      if (df(i) > 0.0)
+        needed = std::min(needed, (tol - f[p](i)) / df(i));
     if (needed < margin)
       near.emplace_back(needed, p);
   }
@@ -286,7 +289,10 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   }
   // No more than kNearPerReached for each point that reaches yield: a large step from an
   // unloaded state (a stage's first) brings nearly every point within the margin.
-  join_nearest(predicted_f, change_f, tol, opt.candidate_margin, kNearPerReached * reached,
+  const auto predicted_change = [&](std::size_t p) -> const Eigen::VectorXd& {
+    return change_f[p];
+  };
+  join_nearest(predicted_f, predicted_change, tol, opt.candidate_margin, kNearPerReached * reached,
                candidate);
   clock.lap("increments: candidates");
 
@@ -456,11 +462,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       // The next round's flow spreads further: the points this round's plastic flow moved
       // towards yield (f - f_predicted, the change the elastic predictor did not foresee)
       // join it where that change, candidate_margin times over, reaches yield.
-      std::vector<Eigen::VectorXd> flow_f(ctx.points.size());
-      for (std::size_t p = 0; p < ctx.points.size(); ++p)
-        if (!candidate[p])
-          flow_f[p] = f_next[p] - predicted_f[p];
-      join_nearest(f_next, flow_f, tol, opt.candidate_margin, kNearPerReached * added, candidate);
+      const auto flow_change = [&](std::size_t p) { return f_next[p] - predicted_f[p]; };
+      join_nearest(f_next, flow_change, tol, opt.candidate_margin, kNearPerReached * added,
+                   candidate);
     }
     warm_rows.clear();
     for (int r = 0; r < m; ++r)
