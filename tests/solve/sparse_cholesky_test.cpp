@@ -3,6 +3,7 @@
 // at round-off, and a matrix that is not positive definite must be refused whatever factor
 // CHOLMOD picks: a small one is simplicial (LDL' by default, which would not fail), a large
 // one supernodal.
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -80,6 +81,46 @@ TEST(SparseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
     EXPECT_FALSE(k.factorize(lower)) << side << " blocks a side";
     EXPECT_GE(k.failed_column(), 0);
     EXPECT_FALSE(k.factorized());
+  }
+}
+
+// The Schur complement onto the blocks ordered last, read from the factor, against the dense
+// K_PP - K_PE K_EE^-1 K_EP (a second method: Eigen's dense Cholesky of K_EE). Zones: a patch
+// inside the grid (coupled to the rest on all sides), a corner, scattered blocks, every block.
+TEST(SparseCholesky, SchurComplementOfTheBlocksOrderedLastIsTheDenseOne) {
+  constexpr int kSide = 12;
+  const CholmodMatrix lower = grid(kSide, 7);
+  const Eigen::MatrixXd k = Eigen::MatrixXd(lower).selfadjointView<Eigen::Lower>();
+  const auto patch = [](int x, int y) { return x >= 4 && x < 8 && y >= 3 && y < 9; };
+  const auto corner = [](int x, int y) { return x < 3 && y < 3; };
+  const auto scattered = [](int x, int y) { return (x * 7 + y * 3) % 5 == 0; };
+  const auto every = [](int, int) { return true; };
+  const std::function<bool(int, int)> zones[] = {patch, corner, scattered, every};
+  for (const auto& in_zone : zones) {
+    std::vector<char> last(kSide * kSide, 0);
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x)
+        last[y * kSide + x] = in_zone(x, y) ? 1 : 0;
+    SparseCholesky chol;
+    chol.analyze_last(lower, 6, last);
+    ASSERT_TRUE(chol.factorize(lower));
+    const Eigen::MatrixXd s =
+        Eigen::MatrixXd(chol.schur_complement(lower)).selfadjointView<Eigen::Lower>();
+    const std::vector<std::int64_t>& p = chol.trailing_unknowns();
+    std::vector<std::int64_t> e;
+    for (std::int64_t i = 0; i < lower.rows(); ++i)
+      if (!last[static_cast<std::size_t>(i / 6)])
+        e.push_back(i);
+    ASSERT_EQ(static_cast<std::size_t>(s.rows()), p.size());
+    ASSERT_EQ(p.size() + e.size(), static_cast<std::size_t>(lower.rows()));
+    const Eigen::MatrixXd k_pp = k(p, p);
+    Eigen::MatrixXd expected = k_pp;
+    if (!e.empty())
+      expected -= k(p, e) * Eigen::MatrixXd(k(e, e)).llt().solve(Eigen::MatrixXd(k(e, p)));
+    EXPECT_LE((s - expected).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff());
+    // Each block's six unknowns stay together and in order (the block_size of S's analysis).
+    for (std::size_t i = 0; i < p.size(); ++i)
+      EXPECT_EQ(p[i] % 6, static_cast<std::int64_t>(i % 6));
   }
 }
 

@@ -7,10 +7,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <set>
 #include <utility>
 
+#include <bimrock/analysis/condensed_stiffness.hpp>
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/flexibility_columns.hpp>
 #include <bimrock/analysis/support_check.hpp>
@@ -34,14 +36,78 @@ constexpr std::size_t kNearPerReached = 2;
 /// towards the bound (each carried one shrinks the bracket tenfold) until one fails.
 constexpr double kAimAtBound = 0.9;
 
+/// The zone K is condensed onto holds kZoneGrowth times the blocks of the candidate points that
+/// ask for it, kZoneRegrowth times the last zone when that one was outgrown, and at least
+/// PlasticOptions::least_zone_blocks. Each new zone costs a factorization of K in a new order (~0.4
+/// s at 10^4 blocks), a larger zone costs more in every active-set iteration: measured on the
+/// plastic model of `bimrock bench` at 10^4 blocks (docs/performance.md, session 12), growths
+/// of 1.3-2.5 and regrowths of 1-2 all took 14-18 s (9-17 zones), 1.5 and 1.2 among the fastest.
+constexpr double kZoneGrowth = 1.5;
+constexpr double kZoneRegrowth = 1.2;
+
 // The LCP solvers and what they keep from one increment to the next.
 struct LcpSolvers {
-  explicit LcpSolvers(FlexibilityColumns c) : columns(std::move(c)) {}
+  LcpSolvers(SparseCholesky& k_factor, const SparseMatrix& k_matrix)
+      : k(k_factor), k_lower(k_matrix) {}
+  SparseCholesky& k;  // K's factor: reordered when the condensation's zone changes
+  const SparseMatrix& k_lower;
+  std::unique_ptr<CondensedStiffness> condensed;  // S: the LCP's stiffness (or K itself)
   ActiveSetLcp active_set;
   Lemke lemke;
-  FlexibilityColumns columns;                 // K^-1 phi_r of the rows that were ever active
-  TangentFactor tangent;                      // the reduced tangent (analysis and last factor)
+  std::optional<FlexibilityColumns> columns;  // S^-1 phi_r of the rows that were ever active
+  std::optional<TangentFactor> tangent;       // the reduced tangent (analysis and last factor)
   std::set<std::pair<int, int>> last_active;  // (point, mode) yielding in the last increment
+  CholeskyWork retired_tangent;               // the work of tangents of earlier condensations
+  CholeskyWork retired_s;                     // and of their S's factors
+  int condensations = 0;
+
+  // Condenses K onto a zone that holds the blocks flagged in `needed`, unless the one it has
+  // does. What was kept in S's unknowns goes.
+  void condense(const Model& model, const std::vector<char>& needed, const PlasticOptions& opt) {
+    if (condensed) {
+      bool covered = true;
+      for (std::size_t b = 0; b < needed.size() && covered; ++b)
+        covered = !needed[b] || condensed->covers(static_cast<int>(b));
+      if (covered)
+        return;
+    }
+    const auto count = static_cast<int>(std::count(needed.begin(), needed.end(), 1));
+    // A margin around what is needed now, and more than the last zone: a zone outgrown once
+    // is outgrown again as the plastic zone spreads.
+    const int last = condensed ? condensed->zone_blocks() : 0;
+    const std::vector<char> zone =
+        grow_zone(model, needed,
+                  std::max({opt.least_zone_blocks, static_cast<int>(kZoneGrowth * count),
+                            static_cast<int>(kZoneRegrowth * last)}));
+    if (tangent)
+      add(retired_tangent, tangent->cholesky.work());
+    if (condensed && !condensed->whole())
+      add(retired_s, condensed->factor().work());
+    columns.reset();
+    tangent.reset();
+    condensed.reset();
+    if (static_cast<double>(std::count(zone.begin(), zone.end(), 1)) >
+        opt.condensed_zone_fraction * model.n_blocks())
+      condensed = std::make_unique<CondensedStiffness>(k, k_lower);
+    else
+      condensed = std::make_unique<CondensedStiffness>(k, k_lower, zone);
+    ++condensations;
+    if (std::getenv("BIMROCK_DEBUG_LCP"))
+      std::fprintf(stderr, "condensation %d: %d blocks needed, zone of %d\n", condensations, count,
+                   condensed->zone_blocks());
+    // The columns kept may take 12 bytes per entry of S's factor, 1.5 times its values: they
+    // set the peak of the dense route's increments (a third of it cost 2.5x the columns' time
+    // at 10^4 blocks for 10% less peak; docs/performance.md, sessions 10 and 11).
+    const SparseCholesky& s = condensed->factor();
+    columns.emplace(s, std::max<std::int64_t>(64 << 20, 12 * s.factor_nonzeros()));
+    tangent.emplace();
+  }
+  static void add(CholeskyWork& total, const CholeskyWork& w) {
+    total.factorizations += w.factorizations;
+    total.solved_columns += w.solved_columns;
+    total.factorize_seconds += w.factorize_seconds;
+    total.solve_seconds += w.solve_seconds;
+  }
 };
 
 // The LCP of one round given column by column (eqs. 24, 28): M = N - C K^-1 Phi, plus under
@@ -129,7 +195,6 @@ struct StageContext {
   const Model& model;
   const std::vector<YieldPoint>& points;
   const SparseCholesky& k;
-  const SparseMatrix& k_lower;
   const Stage& stage;
   Eigen::VectorXd x_ref;       // K^-1 P_stage: displacement of the whole stage load, elastic
   Eigen::VectorXd control;     // displacement control: u_monitor . direction = control . U
@@ -325,20 +390,38 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       if (gap_old(r) > 0.0 || warm_rows.count({row.point, row.mode}))
         warm(r) = 1.0;
     }
-    const double solved_before = solvers.columns.seconds();
-    IncrementLcp lcp(sys, ctx.points, solvers.columns, lcp_q, gap_old,
-                     control ? &ctx.control : nullptr,
-                     control ? Eigen::VectorXd(cx / ctx.control_rate) : Eigen::VectorXd());
     Eigen::VectorXd z = Eigen::VectorXd::Zero(m);
-    clock.lap("increments: LCP matrix", "increments: K^-1 Phi columns",
-              solvers.columns.seconds() - solved_before);
+    std::optional<Eigen::VectorXd> plastic_du;  // K^-1 Phi (z - gap_old), once known
     if (m > 0) {
+      // The LCP in the unknowns of the zone K is condensed onto (condensed_stiffness.hpp): it
+      // must hold every block the rows touch, and under displacement control the monitor's.
+      std::vector<char> needed(static_cast<std::size_t>(model.n_blocks()), 0);
+      for (int p : candidates) {
+        needed[static_cast<std::size_t>(ctx.points[p].block_i)] = 1;
+        if (ctx.points[p].is_interface() && ctx.points[p].block_j != kGround)
+          needed[static_cast<std::size_t>(ctx.points[p].block_j)] = 1;
+      }
+      if (control)
+        needed[static_cast<std::size_t>(model.monitors[ctx.stage.control->monitor].block)] = 1;
+      solvers.condense(model, needed, opt);
+      clock.lap("increments: condensation");
+      const CondensedStiffness& condensed = *solvers.condensed;
+      const YieldSystem local = condensed.local(sys);
+      const Eigen::VectorXd local_control =
+          control ? condensed.local(ctx.control) : Eigen::VectorXd();
+      FlexibilityColumns& columns = *solvers.columns;
+      const double solved_before = columns.seconds();
+      IncrementLcp lcp(local, ctx.points, columns, lcp_q, gap_old,
+                       control ? &local_control : nullptr,
+                       control ? Eigen::VectorXd(cx / ctx.control_rate) : Eigen::VectorXd());
+      clock.lap("increments: LCP matrix", "increments: K^-1 Phi columns",
+                columns.seconds() - solved_before);
       // solve_lcp: the active-set method first (warm-started from the rows that yielded in the
       // last increment and the open joints), on the sparse reduced tangent when many rows are
       // active, else on the dense active block (only the columns of active rows are formed);
       // where it does not converge, Lemke on a working set, then on the whole matrix. A
       // collapse is a Lemke ray or a Farkas certificate (docs/formulation.md).
-      const double columns_before = solvers.columns.seconds();
+      const double columns_before = columns.seconds();
       LcpResult r;
       const Eigen::VectorXd* warm_start = warm.maxCoeff() > 0.0 ? &warm : nullptr;
       const bool tangent_route = opt.active_set && opt.reduced_tangent_rows >= 0 &&
@@ -347,13 +430,13 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         // Many rows active: the equations of each active set on the sparse reduced tangent.
         // It reads no column of K^-1 Phi: those kept go, to make room for its factor (they
         // are formed again if the dense route is ever needed).
-        solvers.columns.clear();
-        SplitLcp split{&ctx.k_lower, &sys.c, &sys.phi, &sys.n, lcp.q(), {}, {}};
+        columns.clear();
+        SplitLcp split{&condensed.lower(), &local.c, &local.phi, &local.n, lcp.q(), {}, {}};
         for (int i = 0; i < m; ++i) {
           split.group.push_back(lcp.group(i));
           split.group_rank.push_back(lcp.group_rank(i));
         }
-        ReducedTangentEquations equations(split, ctx.k, solvers.tangent);
+        ReducedTangentEquations equations(split, condensed.factor(), *solvers.tangent);
         r = solvers.active_set.solve(equations, warm_start);
         t.active_set_iterations += r.steps;
         t.tangent_factorizations += equations.factorizations();
@@ -392,13 +475,13 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         t.pivots += r.steps;
       }
       clock.lap("increments: LCP", "increments: K^-1 Phi columns",
-                solvers.columns.seconds() - columns_before);
+                columns.seconds() - columns_before);
       if (r.status == LcpStatus::no_solution) {
         t.status = Trial::Status::collapse;
         t.rows = sys.rows;
         if (r.ray.size() == m) {
           t.ray = r.ray;
-          t.du = solvers.columns.combine(sys, r.ray);
+          t.du = ctx.k.solve(Eigen::VectorXd(sys.phi * r.ray));
           // Under load control q moves with the step and M does not: the ray proves every
           // step from some fraction of this one on (a tighter upper bound for the bracket).
           if (!control)
@@ -413,14 +496,14 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         // positive eigenvalue and the multipliers blow up instead of Lemke finding a ray.
         // Plastic displacements that dwarf the elastic ones of the same step are that mechanism.
         const Eigen::VectorXd flow = r.z - gap_old;
-        const Eigen::VectorXd plastic_du = solvers.columns.combine(sys, flow);
-        const double plastic = plastic_du.cwiseAbs().maxCoeff();
+        plastic_du = ctx.k.solve(Eigen::VectorXd(sys.phi * flow));
+        const double plastic = plastic_du->cwiseAbs().maxCoeff();
         const double elastic = std::abs(step) * ctx.x_ref.cwiseAbs().maxCoeff();
         if (plastic > kMechanismRatio * elastic) {
           t.status = Trial::Status::collapse;
           t.rows = sys.rows;
           t.ray = flow.cwiseAbs() / flow.cwiseAbs().maxCoeff();
-          t.du = plastic_du / flow.cwiseAbs().maxCoeff();
+          t.du = *plastic_du / flow.cwiseAbs().maxCoeff();
           return t;
         }
       }
@@ -438,10 +521,12 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       z = r.z;
     }
     const Eigen::VectorXd lambda = z - gap_old;
-    const Eigen::VectorXd plastic_du =
-        m > 0 ? solvers.columns.combine(sys, lambda) : Eigen::VectorXd::Zero(model.n_dofs());
-    const double dfactor = control ? (step - ctx.control.dot(plastic_du)) / ctx.control_rate : step;
-    t.du = dfactor * ctx.x_ref + plastic_du;
+    if (!plastic_du)  // the displacements of the whole model: a solve with K's factor
+      plastic_du = m > 0 ? ctx.k.solve(Eigen::VectorXd(sys.phi * lambda))
+                         : Eigen::VectorXd::Zero(model.n_dofs());
+    const double dfactor =
+        control ? (step - ctx.control.dot(*plastic_du)) / ctx.control_rate : step;
+    t.du = dfactor * ctx.x_ref + *plastic_du;
     t.next = s;
     t.next.u += t.du;
     t.next.stage_factor += dfactor;
@@ -535,10 +620,18 @@ Collapse describe_collapse(int stage, double carried, double failed, const Trial
 // and the solves with K (flexibility columns, and every LCP result measured).
 PlasticResult with_solver_work(PlasticResult result, const SparseCholesky& k,
                                const LcpSolvers& solvers) {
-  const CholeskyWork& tangent = solvers.tangent.cholesky.work();
+  CholeskyWork tangent = solvers.retired_tangent;
+  if (solvers.tangent)
+    LcpSolvers::add(tangent, solvers.tangent->cholesky.work());
+  CholeskyWork s = solvers.retired_s;
+  if (solvers.condensed && !solvers.condensed->whole())
+    LcpSolvers::add(s, solvers.condensed->factor().work());
   result.timings.add("(LCP: tangent factorizations)", tangent.factorize_seconds);
   result.timings.add("(LCP: tangent solves)", tangent.solve_seconds);
   result.timings.add("(solves with K)", k.work().solve_seconds);
+  result.timings.add("(solves with S, K condensed)", s.solve_seconds);
+  result.condensations = solvers.condensations;
+  result.zone_blocks = solvers.condensed ? solvers.condensed->zone_blocks() : 0;
   return result;
 }
 
@@ -565,14 +658,10 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.points = make_yield_points(model);
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
-  // The columns kept may take 12 bytes per entry of K's factor, 1.5 times the factor's values:
-  // they set the peak of the dense route's increments (a third of it costs 2.5x the columns'
-  // time at 10^4 blocks for 10% less peak; docs/performance.md, sessions 10 and 11).
-  LcpSolvers solvers(
-      FlexibilityColumns(k, std::max<std::int64_t>(64 << 20, 12 * k.factor_nonzeros())));
+  LcpSolvers solvers(k, lower);
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
-    StageContext ctx{model, result.points, k, lower, stage, {}, {}, 0.0, &result.timings};
+    StageContext ctx{model, result.points, k, stage, {}, {}, 0.0, &result.timings};
     {
       ScopedTimer t(result.timings, "stage loads");
       ctx.x_ref = k.solve(assemble_loads(model, stage.loads));

@@ -44,6 +44,12 @@ struct PlasticOptions {
   /// many rows; a larger LCP fails the step, which is then cut (Lemke is O(m^3) and the dense
   /// block needs a back-solve per active row: hours at 10^4 rows).
   int dense_fallback_rows = 4000;
+  /// The LCPs are solved on K condensed statically onto a zone of blocks that holds every
+  /// candidate point (docs/formulation.md) while that zone is at most this fraction of the
+  /// model; a larger one is not worth it, and the analysis goes on with K itself (0: never
+  /// condense, 1: always). The zone has at least least_zone_blocks blocks.
+  double condensed_zone_fraction = 0.5;
+  int least_zone_blocks = 200;
   /// Record each phase's peak resident memory in the timings (benchmarks).
   bool track_memory = false;
 };
@@ -102,6 +108,10 @@ struct PlasticResult {
   std::optional<Collapse> collapse;
   std::optional<Stop> stopped;
   Timings timings;
+  /// Times K was condensed onto a zone (factorized again in another order; the last may be
+  /// "no condensation") and the blocks of the last zone (docs/formulation.md).
+  int condensations = 0;
+  int zone_blocks = 0;
 };
 
 /// Called after every carried increment (e.g. to write its results).

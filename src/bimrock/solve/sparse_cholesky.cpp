@@ -1,5 +1,6 @@
 #include <bimrock/solve/sparse_cholesky.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <vector>
@@ -7,6 +8,40 @@
 #include <cholmod.h>
 
 namespace bimrock {
+
+namespace {
+
+// A cholmod view of the Eigen matrix (no copy): stype -1 reads the lower triangle.
+cholmod_sparse view(const CholmodMatrix& a) {
+  cholmod_sparse s{};
+  s.nrow = static_cast<size_t>(a.rows());
+  s.ncol = static_cast<size_t>(a.cols());
+  s.nzmax = static_cast<size_t>(a.nonZeros());
+  s.p = const_cast<std::int64_t*>(a.outerIndexPtr());
+  s.i = const_cast<std::int64_t*>(a.innerIndexPtr());
+  s.x = const_cast<double*>(a.valuePtr());
+  s.stype = -1;
+  s.itype = CHOLMOD_LONG;
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
+cholmod_dense view(const Eigen::MatrixXd& b) {
+  cholmod_dense d{};
+  d.nrow = static_cast<size_t>(b.rows());
+  d.ncol = static_cast<size_t>(b.cols());
+  d.nzmax = d.nrow * d.ncol;
+  d.d = d.nrow;
+  d.x = const_cast<double*>(b.data());
+  d.xtype = CHOLMOD_REAL;
+  d.dtype = CHOLMOD_DOUBLE;
+  return d;
+}
+
+}  // namespace
 
 struct SparseCholesky::Impl {
   cholmod_common common{};
@@ -20,36 +55,6 @@ struct SparseCholesky::Impl {
     if (factor)
       cholmod_l_free_factor(&factor, &common);
     cholmod_l_finish(&common);
-  }
-
-  // A cholmod view of the Eigen matrix (no copy): stype -1 reads the lower triangle.
-  static cholmod_sparse view(const CholmodMatrix& a) {
-    cholmod_sparse s{};
-    s.nrow = static_cast<size_t>(a.rows());
-    s.ncol = static_cast<size_t>(a.cols());
-    s.nzmax = static_cast<size_t>(a.nonZeros());
-    s.p = const_cast<std::int64_t*>(a.outerIndexPtr());
-    s.i = const_cast<std::int64_t*>(a.innerIndexPtr());
-    s.x = const_cast<double*>(a.valuePtr());
-    s.stype = -1;
-    s.itype = CHOLMOD_LONG;
-    s.xtype = CHOLMOD_REAL;
-    s.dtype = CHOLMOD_DOUBLE;
-    s.sorted = 1;
-    s.packed = 1;
-    return s;
-  }
-
-  static cholmod_dense view(const Eigen::MatrixXd& b) {
-    cholmod_dense d{};
-    d.nrow = static_cast<size_t>(b.rows());
-    d.ncol = static_cast<size_t>(b.cols());
-    d.nzmax = d.nrow * d.ncol;
-    d.d = d.nrow;
-    d.x = const_cast<double*>(b.data());
-    d.xtype = CHOLMOD_REAL;
-    d.dtype = CHOLMOD_DOUBLE;
-    return d;
   }
 };
 
@@ -86,35 +91,83 @@ CholmodMatrix block_pattern(const CholmodMatrix& lower, int block_size) {
 
 }  // namespace
 
+namespace {
+
+// The ordering CHOLMOD's default strategy gives a symmetric pattern (lower triangle).
+std::vector<std::int64_t> default_ordering(const CholmodMatrix& pattern, cholmod_common& cm) {
+  cholmod_sparse p = view(pattern);
+  cholmod_factor* f = cholmod_l_analyze(&p, &cm);
+  if (!f)
+    throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  const auto* perm = static_cast<const std::int64_t*>(f->Perm);
+  std::vector<std::int64_t> out(perm, perm + pattern.rows());
+  cholmod_l_free_factor(&f, &cm);
+  return out;
+}
+
+// The lower pattern of the graph among `nodes` (ascending: the lower triangle stays lower), in
+// their own numbering.
+CholmodMatrix induced_pattern(const CholmodMatrix& lower, const std::vector<std::int64_t>& nodes) {
+  std::vector<std::int64_t> local(static_cast<std::size_t>(lower.rows()), -1);
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    local[static_cast<std::size_t>(nodes[k])] = static_cast<std::int64_t>(k);
+  std::vector<Eigen::Triplet<double, std::int64_t>> entries;
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+    for (CholmodMatrix::InnerIterator it(lower, nodes[k]); it; ++it)
+      if (local[static_cast<std::size_t>(it.row())] >= 0)
+        entries.emplace_back(local[static_cast<std::size_t>(it.row())],
+                             static_cast<std::int64_t>(k), 1.0);
+  const auto n = static_cast<std::int64_t>(nodes.size());
+  CholmodMatrix out(n, n);
+  out.setFromTriplets(entries.begin(), entries.end());
+  out.makeCompressed();
+  return out;
+}
+
+}  // namespace
+
+void SparseCholesky::analyze_given(const CholmodMatrix& lower, const std::int64_t* perm,
+                                   bool exact) {
+  cholmod_sparse a = view(lower);
+  cholmod_common& cm = impl_->common;
+  const int saved_nmethods = cm.nmethods;
+  const int saved_ordering = cm.method[0].ordering;
+  const int saved_supernodal = cm.supernodal;
+  const int saved_postorder = cm.postorder;
+  cm.nmethods = 1;
+  cm.method[0].ordering = CHOLMOD_GIVEN;
+  if (exact) {
+    // Supernodal, and the order kept as it is: CHOLMOD would otherwise postorder its
+    // elimination tree, which may move a leading column after trailing ones.
+    cm.supernodal = CHOLMOD_SUPERNODAL;
+    cm.postorder = 0;
+  }
+  impl_->factor = cholmod_l_analyze_p(&a, const_cast<std::int64_t*>(perm), nullptr, 0, &cm);
+  cm.nmethods = saved_nmethods;
+  cm.method[0].ordering = saved_ordering;
+  cm.supernodal = saved_supernodal;
+  cm.postorder = saved_postorder;
+}
+
 void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
   if (!lower.isCompressed())
     throw std::logic_error("SparseCholesky: matrix must be compressed");
   if (impl_->factor)
     cholmod_l_free_factor(&impl_->factor, &impl_->common);
-  cholmod_sparse a = Impl::view(lower);
+  trailing_.clear();
+  coupled_.clear();
   cholmod_common& cm = impl_->common;
   if (block_size > 1 && lower.rows() % block_size == 0 && lower.rows() > block_size) {
     // Order the block graph with CHOLMOD's default strategy, expand the permutation to the
     // unknowns, and analyze the full matrix with that given ordering.
-    const CholmodMatrix pattern = block_pattern(lower, block_size);
-    cholmod_sparse p = Impl::view(pattern);
-    cholmod_factor* coarse = cholmod_l_analyze(&p, &cm);
-    if (!coarse)
-      throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
-    const auto* coarse_perm = static_cast<const std::int64_t*>(coarse->Perm);
+    const std::vector<std::int64_t> coarse = default_ordering(block_pattern(lower, block_size), cm);
     std::vector<std::int64_t> perm(static_cast<std::size_t>(lower.rows()));
-    for (std::int64_t k = 0; k < pattern.rows(); ++k)
+    for (std::size_t k = 0; k < coarse.size(); ++k)
       for (int d = 0; d < block_size; ++d)
-        perm[block_size * k + d] = block_size * coarse_perm[k] + d;
-    cholmod_l_free_factor(&coarse, &cm);
-    const int saved_nmethods = cm.nmethods;
-    const int saved_ordering = cm.method[0].ordering;
-    cm.nmethods = 1;
-    cm.method[0].ordering = CHOLMOD_GIVEN;
-    impl_->factor = cholmod_l_analyze_p(&a, perm.data(), nullptr, 0, &cm);
-    cm.nmethods = saved_nmethods;
-    cm.method[0].ordering = saved_ordering;
+        perm[block_size * k + d] = block_size * coarse[k] + d;
+    analyze_given(lower, perm.data(), false);
   } else {
+    cholmod_sparse a = view(lower);
     impl_->factor = cholmod_l_analyze(&a, &cm);
   }
   if (!impl_->factor)
@@ -125,10 +178,133 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
   factorized_ = false;
 }
 
+void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
+                                  const std::vector<char>& last) {
+  if (!lower.isCompressed())
+    throw std::logic_error("SparseCholesky: matrix must be compressed");
+  if (block_size < 1 || lower.rows() % block_size != 0 ||
+      static_cast<std::int64_t>(last.size()) != lower.rows() / block_size)
+    throw std::logic_error("SparseCholesky::analyze_last: one flag per block");
+  if (impl_->factor)
+    cholmod_l_free_factor(&impl_->factor, &impl_->common);
+  cholmod_common& cm = impl_->common;
+  const CholmodMatrix pattern = block_pattern(lower, block_size);
+  const std::int64_t nb = pattern.rows();
+  std::vector<char> coupled(static_cast<std::size_t>(nb), 0);  // flagged, next to unflagged
+  for (std::int64_t c = 0; c < nb; ++c)
+    for (CholmodMatrix::InnerIterator it(pattern, c); it; ++it)
+      if (last[static_cast<std::size_t>(c)] != last[static_cast<std::size_t>(it.row())]) {
+        coupled[static_cast<std::size_t>(last[static_cast<std::size_t>(c)] ? c : it.row())] = 1;
+      }
+  // Three groups, each ordered on its own graph (ascending first: see induced_pattern).
+  std::vector<std::int64_t> groups[3];
+  for (std::int64_t b = 0; b < nb; ++b) {
+    const auto i = static_cast<std::size_t>(b);
+    groups[!last[i] ? 0 : coupled[i] ? 2 : 1].push_back(b);
+  }
+  std::vector<std::int64_t> coarse;
+  for (const std::vector<std::int64_t>& g : groups) {
+    if (g.empty())
+      continue;
+    const std::vector<std::int64_t> order = g.size() > 1
+                                                ? default_ordering(induced_pattern(pattern, g), cm)
+                                                : std::vector<std::int64_t>{0};
+    for (std::int64_t k : order)
+      coarse.push_back(g[static_cast<std::size_t>(k)]);
+  }
+  std::vector<std::int64_t> perm(static_cast<std::size_t>(lower.rows()));
+  for (std::size_t k = 0; k < coarse.size(); ++k)
+    for (int d = 0; d < block_size; ++d)
+      perm[block_size * k + d] = block_size * coarse[k] + d;
+  analyze_given(lower, perm.data(), true);
+  if (!impl_->factor)
+    throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  const std::size_t first = block_size * groups[0].size();
+  trailing_.assign(perm.begin() + static_cast<std::ptrdiff_t>(first), perm.end());
+  coupled_.assign(trailing_.size(), 0);
+  for (std::size_t k = 0; k < trailing_.size(); ++k)
+    coupled_[k] = coupled[static_cast<std::size_t>(trailing_[k] / block_size)];
+  n_ = lower.rows();
+  analyzed_nonzeros_ = lower.nonZeros();
+  factor_flops_ = cm.fl;
+  factorized_ = false;
+}
+
+CholmodMatrix SparseCholesky::schur_complement(const CholmodMatrix& lower) const {
+  const cholmod_factor* f = impl_->factor;
+  if (!factorized_ || trailing_.empty() || !f->is_super)
+    throw std::logic_error("SparseCholesky::schur_complement before analyze_last and factorize");
+  const auto np = static_cast<std::int64_t>(trailing_.size());
+  const std::int64_t first = n_ - np;  // of the trailing columns, in the factor's order
+  std::int64_t nb = 0;                 // trailing unknowns coupled to leading ones: the last
+  while (nb < np && coupled_[static_cast<std::size_t>(np - 1 - nb)])
+    ++nb;
+  const std::int64_t first_coupled = n_ - nb;
+  // S = K_PP - K_PE K_EE^-1 K_EP differs from K_PP only where both unknowns are coupled to E
+  // (the set B, ordered last), and there S = L_B L_B^T over the rows B of L's trailing
+  // columns (L_PP L_PP^T = S): a sum over the supernodes of G G^T, G the dense rows of B of
+  // each (a supernode's rows ascend, so they are its last rows).
+  Eigen::MatrixXd s_bb = Eigen::MatrixXd::Zero(nb, nb);
+  const auto* super = static_cast<const std::int64_t*>(f->super);
+  const auto* pi = static_cast<const std::int64_t*>(f->pi);
+  const auto* px = static_cast<const std::int64_t*>(f->px);
+  const auto* ls = static_cast<const std::int64_t*>(f->s);
+  const auto* lx = static_cast<const double*>(f->x);
+  for (std::size_t sn = 0; sn < f->nsuper; ++sn) {
+    const std::int64_t k1 = super[sn];
+    const std::int64_t k2 = super[sn + 1];
+    if (k2 <= first || nb == 0)
+      continue;
+    const std::int64_t j0 = std::max(k1, first);
+    const std::int64_t nrow = pi[sn + 1] - pi[sn];
+    const std::int64_t* rows = ls + pi[sn];
+    if (!std::is_sorted(rows, rows + nrow))
+      throw std::logic_error("SparseCholesky::schur_complement: unsorted supernode");
+    const std::int64_t i0 = std::lower_bound(rows, rows + nrow, first_coupled) - rows;
+    if (i0 == nrow)
+      continue;
+    const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> block(
+        lx + px[sn] + (j0 - k1) * nrow + i0, nrow - i0, k2 - j0, Eigen::OuterStride<>(nrow));
+    Eigen::MatrixXd g = block;
+    for (Eigen::Index c = 0; c < g.cols(); ++c)  // the diagonal block's upper part is not L's
+      for (Eigen::Index r = 0; r < g.rows() && rows[i0 + r] < j0 + c; ++r)
+        g(r, c) = 0.0;
+    Eigen::MatrixXd h = Eigen::MatrixXd::Zero(g.rows(), g.rows());
+    h.selfadjointView<Eigen::Lower>().rankUpdate(g);
+    for (Eigen::Index c = 0; c < h.cols(); ++c)
+      for (Eigen::Index r = c; r < h.rows(); ++r)
+        s_bb(rows[i0 + r] - first_coupled, rows[i0 + c] - first_coupled) += h(r, c);
+  }
+  // K_PP elsewhere, read from K in the trailing order.
+  std::vector<std::int64_t> local(static_cast<std::size_t>(n_), -1);
+  for (std::int64_t k = 0; k < np; ++k)
+    local[static_cast<std::size_t>(trailing_[static_cast<std::size_t>(k)])] = k;
+  std::vector<Eigen::Triplet<double, std::int64_t>> entries;
+  for (std::int64_t k = 0; k < np; ++k) {
+    const std::int64_t c = trailing_[static_cast<std::size_t>(k)];
+    for (CholmodMatrix::InnerIterator it(lower, c); it; ++it) {
+      const std::int64_t r = local[static_cast<std::size_t>(it.row())];
+      if (r < 0)
+        continue;
+      const std::int64_t hi = std::max(r, k);
+      const std::int64_t lo = std::min(r, k);
+      if (lo < np - nb)
+        entries.emplace_back(hi, lo, it.value());
+    }
+  }
+  for (std::int64_t c = 0; c < nb; ++c)
+    for (std::int64_t r = c; r < nb; ++r)
+      entries.emplace_back(np - nb + r, np - nb + c, s_bb(r, c));
+  CholmodMatrix s(np, np);
+  s.setFromTriplets(entries.begin(), entries.end());
+  s.makeCompressed();
+  return s;
+}
+
 bool SparseCholesky::factorize(const CholmodMatrix& lower) {
   if (!impl_->factor)
     analyze(lower);
-  cholmod_sparse a = Impl::view(lower);
+  cholmod_sparse a = view(lower);
   const auto start = std::chrono::steady_clock::now();
   cholmod_l_factorize(&a, impl_->factor, &impl_->common);
   ++work_.factorizations;
@@ -177,7 +353,7 @@ bool SparseCholesky::supernodal() const {
 Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {
   if (!factorized_)
     throw std::logic_error("SparseCholesky::solve before a successful factorize");
-  cholmod_dense rhs = Impl::view(b);
+  cholmod_dense rhs = view(b);
   const auto start = std::chrono::steady_clock::now();
   cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, impl_->factor, &rhs, &impl_->common);
   work_.solved_columns += b.cols();

@@ -4,6 +4,7 @@
 /// so one factor object serves every load increment of an analysis.
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -33,6 +34,20 @@ class SparseCholesky {
   /// entries to order for the same permutation quality.
   void analyze(const CholmodMatrix& lower, int block_size = 1);
 
+  /// Symbolic analysis that orders the blocks flagged in `last` (one flag per block of
+  /// block_size unknowns) after all the others, so that their Schur complement is the trailing
+  /// part of the factor (schur_complement()). The others are ordered as analyze() orders a whole
+  /// matrix; the flagged ones coupled to no other come first among them, those coupled to one
+  /// at the very end (the Schur complement is dense on them). The factor is supernodal.
+  void analyze_last(const CholmodMatrix& lower, int block_size, const std::vector<char>& last);
+
+  /// After analyze_last() and a successful factorize(): with P the flagged unknowns and E the
+  /// others, S = K_PP - K_PE K_EE^-1 K_EP = L_PP L_PP^T (lower triangle), its rows and columns in
+  /// the order of trailing_unknowns() (each block's unknowns together, as in K).
+  [[nodiscard]] CholmodMatrix schur_complement(const CholmodMatrix& lower) const;
+  /// The unknowns of K in the order of schur_complement()'s rows (empty unless analyze_last()).
+  [[nodiscard]] const std::vector<std::int64_t>& trailing_unknowns() const { return trailing_; }
+
   /// Numeric factorization; false when the matrix is not positive definite, in which case
   /// failed_column() names the original column where the factorization broke down.
   bool factorize(const CholmodMatrix& lower);
@@ -59,8 +74,14 @@ class SparseCholesky {
 
  private:
   struct Impl;
+  /// Symbolic analysis with the given fill-reducing permutation; `exact`: kept exactly as
+  /// given (not postordered) and the factor supernodal, as schur_complement() needs.
+  void analyze_given(const CholmodMatrix& lower, const std::int64_t* perm, bool exact);
+
   std::unique_ptr<Impl> impl_;
   std::int64_t n_ = 0;
+  std::vector<std::int64_t> trailing_;
+  std::vector<char> coupled_;  // per trailing unknown: its block is coupled to a leading one
   std::int64_t analyzed_nonzeros_ = 0;
   std::int64_t failed_column_ = -1;
   double factor_flops_ = 0.0;

@@ -1,0 +1,64 @@
+#pragma once
+/// @file The stiffness condensed statically onto the plastic zone (issue 5). Yield rows touch
+/// only the unknowns of the blocks their points join: with P the unknowns of a zone of blocks
+/// that holds every candidate point of an increment and E the others, the LCP matrix (eq. 28)
+///
+///   M = N - C K^-1 Phi = N - C_P S^-1 Phi_P,   S = K_PP - K_PE K_EE^-1 K_EP,
+///
+/// and the reduced tangent K - Phi_A N_AA^-1 C_A becomes S - Phi_PA N_AA^-1 C_AP. S is the
+/// trailing part of K's factor when K is ordered with the zone last (L_PP L_PP^T = S), so it
+/// costs one factorization of K; each active-set iteration then factorizes a matrix of the
+/// zone's size instead of the whole model's, and each column of K^-1 Phi is a solve with S's
+/// factor. The displacements of the whole model are solves with K's factor, once per round.
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <bimrock/assembly/yield_system.hpp>
+#include <bimrock/solve/sparse_cholesky.hpp>
+
+namespace bimrock {
+
+class CondensedStiffness {
+ public:
+  /// No condensation: S is K and its factor K's.
+  CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower);
+  /// K condensed onto the blocks flagged in `zone`: `k` is analyzed anew with them ordered last
+  /// and factorized (the same K, another order), then S formed and factorized.
+  CondensedStiffness(SparseCholesky& k, const SparseMatrix& k_lower, std::vector<char> zone);
+
+  CondensedStiffness(const CondensedStiffness&) = delete;
+  CondensedStiffness& operator=(const CondensedStiffness&) = delete;
+
+  /// S = K: nothing condensed.
+  [[nodiscard]] bool whole() const { return zone_.empty(); }
+  [[nodiscard]] bool covers(int block) const {
+    return whole() || zone_[static_cast<std::size_t>(block)] != 0;
+  }
+  /// Blocks of the zone (all of them when whole()).
+  [[nodiscard]] int zone_blocks() const;
+  /// S, lower triangle, in the unknowns' order of local().
+  [[nodiscard]] const SparseMatrix& lower() const { return *lower_; }
+  [[nodiscard]] const SparseCholesky& factor() const { return *factor_; }
+
+  /// The yield rows with C and Phi in S's unknowns. Throws std::logic_error if a row touches an
+  /// unknown outside the zone (its terms would be lost).
+  [[nodiscard]] YieldSystem local(const YieldSystem& sys) const;
+  /// A vector of K's unknowns restricted to S's (its entries outside the zone are dropped).
+  [[nodiscard]] Eigen::VectorXd local(const Eigen::VectorXd& v) const;
+
+ private:
+  std::vector<char> zone_;  // per block; empty when whole()
+  SparseMatrix select_;     // n x |P|: column k picks the unknown of S's k-th
+  SparseMatrix own_lower_;  // S when condensed
+  std::unique_ptr<SparseCholesky> own_factor_;
+  const SparseMatrix* lower_ = nullptr;
+  const SparseCholesky* factor_ = nullptr;
+};
+
+/// The blocks of `needed` and rings of their neighbours (blocks that share an interface), ring
+/// by ring, until at least `target` blocks are flagged or no block is left to add.
+std::vector<char> grow_zone(const Model& model, std::vector<char> needed, int target);
+
+}  // namespace bimrock

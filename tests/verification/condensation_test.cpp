@@ -1,0 +1,69 @@
+// Verification: the LCPs solved on K condensed statically onto the plastic zone give the same
+// analysis as on K itself.
+//
+// Source of the expected numbers: a second method on the same model. The abutment model of
+// `bimrock bench` (a jointed mass, Mohr-Coulomb joints with associated flow, a thrust on a strip
+// loaded to collapse) is run once with K itself (PlasticOptions::condensed_zone_fraction = 0)
+// and once condensed onto zones as small as the candidate points allow (fraction 1, least zone
+// 1 block): the carried stage factors, the monitor's displacements and the collapse bracket must
+// agree. The condensed run must have condensed onto a part of the model and more than once (a
+// zone outgrown and replaced), or the test proves nothing. The same under displacement control,
+// whose monitor term must be read in the zone's unknowns.
+#include <gtest/gtest.h>
+
+#include <bimrock/analysis/plastic_analysis.hpp>
+
+#include "support/same_analysis.hpp"
+
+namespace bimrock {
+namespace {
+
+constexpr PlasticOptions kWhole{.condensed_zone_fraction = 0.0};
+constexpr PlasticOptions kCondensed{.condensed_zone_fraction = 1.0, .least_zone_blocks = 1};
+
+void expect_condensed(const PlasticResult& r, int blocks) {
+  EXPECT_GE(r.condensations, 2) << "no zone was outgrown";
+  EXPECT_GT(r.zone_blocks, 0);
+  EXPECT_LT(r.zone_blocks, blocks) << "the last zone is the whole model";
+  std::printf("%d condensations, the last onto %d of %d blocks\n", r.condensations, r.zone_blocks,
+              blocks);
+}
+
+TEST(Condensation, GivesTheSameAnalysisAsTheWholeStiffness) {
+  const PlasticResult whole = testing::run_abutment(kWhole);
+  const PlasticResult condensed = testing::run_abutment(kCondensed);
+  EXPECT_EQ(whole.condensations, 1);
+  EXPECT_EQ(whole.zone_blocks, static_cast<int>(whole.state.u.size() / 6));
+  expect_condensed(condensed, static_cast<int>(whole.state.u.size() / 6));
+  testing::expect_same_analysis(whole, condensed);
+}
+
+TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {
+  // The monitor is driven to 70% of the displacement it had at the last load the abutment
+  // carried under load control, along the way it moved, in 12 steps.
+  const PlasticResult loaded = testing::run_abutment(kWhole);
+  ASSERT_TRUE(loaded.collapse.has_value());
+  const Vec2 reached = loaded.history.back().monitors[0];
+  CaseSpec c = abutment_case(100, 25, 1.2 * abutment_collapse_shear());
+  StageSpec& stage = c.stages.back();
+  stage.increments = 12;
+  stage.control =
+      DisplacementControlSpec{c.monitors[0].name, reached.normalized(), 0.7 * reached.norm(), {}};
+  const Model model = build_model(c);
+  const PlasticResult whole = run_plastic_analysis(model, kWhole);
+  const PlasticResult condensed = run_plastic_analysis(model, kCondensed);
+  expect_condensed(condensed, model.n_blocks());
+  ASSERT_FALSE(whole.collapse || whole.stopped);
+  ASSERT_EQ(whole.history.size(), condensed.history.size());
+  for (std::size_t i = 0; i < whole.history.size(); ++i) {
+    const IncrementRecord& a = whole.history[i];
+    const IncrementRecord& b = condensed.history[i];
+    EXPECT_NEAR(b.stage_factor, a.stage_factor, 1e-7 * std::abs(a.stage_factor)) << i;
+    EXPECT_NEAR((b.monitors[0] - a.monitors[0]).norm(), 0.0, 1e-7 * a.monitors[0].norm()) << i;
+  }
+  EXPECT_LE((condensed.state.u - whole.state.u).cwiseAbs().maxCoeff(),
+            1e-7 * whole.state.u.cwiseAbs().maxCoeff());
+}
+
+}  // namespace
+}  // namespace bimrock
