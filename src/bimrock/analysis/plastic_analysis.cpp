@@ -29,6 +29,10 @@ namespace {
 /// Plastic displacements of a load-controlled step more than this many times its elastic ones
 /// are a mechanism resolved only by round-off (see try_increment).
 constexpr double kMechanismRatio = 1e6;
+/// What a point is to an increment's LCP: a required candidate (open, or its predictor reaches
+/// yield, or a round violated it), a near one (within the candidate margin: its rows only save a
+/// round, so it joins only where the condensed zone holds it already), or neither.
+enum Candidacy : char { kNone = 0, kRequired = 1, kNear = 2 };
 /// Candidates within the margin of yield (PlasticOptions::candidate_margin), at most this many
 /// per point that reaches it (or, in a later round, per violated point added).
 constexpr std::size_t kNearPerReached = 2;
@@ -36,12 +40,11 @@ constexpr std::size_t kNearPerReached = 2;
 /// towards the bound (each carried one shrinks the bracket tenfold) until one fails.
 constexpr double kAimAtBound = 0.9;
 
-/// The zone K is condensed onto holds kZoneGrowth times the blocks of the candidate points that
-/// ask for it, kZoneRegrowth times the last zone when that one was outgrown, and at least
-/// PlasticOptions::least_zone_blocks. Each new zone costs a factorization of K in a new order (~0.4
-/// s at 10^4 blocks), a larger zone costs more in every active-set iteration: measured on the
-/// plastic model of `bimrock bench` at 10^4 blocks (docs/performance.md, session 12), growths
-/// of 1.3-2.5 and regrowths of 1-2 all took 14-18 s (9-17 zones), 1.5 and 1.2 among the fastest.
+/// The zone K is condensed onto holds the blocks of the candidate points that ask for it and the
+/// last zone, and kZoneGrowth times as many blocks around them (at least
+/// PlasticOptions::least_zone_blocks). Each new zone costs a factorization of K in a new order
+/// (~0.4 s at 10^4 blocks), a larger zone costs more in every active-set iteration: measured on
+/// the plastic model of `bimrock bench` at 10^4 blocks (docs/performance.md, session 12).
 constexpr double kZoneGrowth = 1.5;
 constexpr double kZoneRegrowth = 1.2;
 
@@ -71,9 +74,9 @@ struct LcpSolvers {
       if (covered)
         return;
     }
+    // A margin around what is needed now, and more blocks than the last zone: a zone outgrown
+    // once is outgrown again as the plastic zone spreads.
     const auto count = static_cast<int>(std::count(needed.begin(), needed.end(), 1));
-    // A margin around what is needed now, and more than the last zone: a zone outgrown once
-    // is outgrown again as the plastic zone spreads.
     const int last = condensed ? condensed->zone_blocks() : 0;
     const std::vector<char> zone =
         grow_zone(model, needed,
@@ -93,7 +96,8 @@ struct LcpSolvers {
       condensed = std::make_unique<CondensedStiffness>(k, k_lower, zone);
     ++condensations;
     if (std::getenv("BIMROCK_DEBUG_LCP"))
-      std::fprintf(stderr, "condensation %d: %d blocks needed, zone of %d\n", condensations, count,
+      std::fprintf(stderr, "condensation %d: %d blocks needed, zone of %d\n", condensations,
+                   static_cast<int>(std::count(needed.begin(), needed.end(), 1)),
                    condensed->zone_blocks());
     // The columns kept may take 12 bytes per entry of S's factor, 1.5 times its values: they
     // set the peak of the dense route's increments (a third of it cost 2.5x the columns' time
@@ -224,7 +228,7 @@ Eigen::VectorXd local_of(const Model& model, const YieldPoint& p, const Eigen::V
   return local_stiffness(model, p) * local_strain(model, p, du);
 }
 
-// Marks as candidates the points not yet candidates whose yield functions f reach tol within
+// Marks as near candidates the points not yet candidates whose yield functions f reach tol within
 // `margin` times their change (`change(p)`: a vector or an Eigen expression; modes where it is
 // positive), nearest first, at most `most`.
 template <class Change>
@@ -245,7 +249,7 @@ void join_nearest(const std::vector<Eigen::VectorXd>& f, const Change& change, d
   const std::size_t keep = std::min(near.size(), most);
   std::nth_element(near.begin(), near.begin() + static_cast<std::ptrdiff_t>(keep), near.end());
   for (std::size_t k = 0; k < keep; ++k)
-    candidate[near[k].second] = 1;
+    candidate[near[k].second] = kNear;
 }
 
 // The largest violation of any yield function (unscaled, in Pa) and the points that violate
@@ -348,7 +352,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   std::size_t reached = 0;
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
     if (s.points[p].gap > 0.0 || predicted_f[p].maxCoeff() > tol) {
-      candidate[p] = 1;
+      candidate[p] = kRequired;
       ++reached;
     }
   }
@@ -364,10 +368,40 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   // The warm start: the rows that yielded in the last increment, then those of the last round
   // (a round adds only the points the last one violated: its solution is nearly this one's).
   std::set<std::pair<int, int>> warm_rows = solvers.last_active;
+  const auto blocks_of = [&](int p, std::vector<char>& flags) {
+    flags[static_cast<std::size_t>(ctx.points[p].block_i)] = 1;
+    if (ctx.points[p].is_interface() && ctx.points[p].block_j != kGround)
+      flags[static_cast<std::size_t>(ctx.points[p].block_j)] = 1;
+  };
+  const auto held = [&](int p) {
+    const YieldPoint& point = ctx.points[p];
+    return solvers.condensed && solvers.condensed->covers(point.block_i) &&
+           (!point.is_interface() || point.block_j == kGround ||
+            solvers.condensed->covers(point.block_j));
+  };
+  const auto in_lcp = [&](int p) {
+    return candidate[p] == kRequired || (candidate[p] == kNear && held(p));
+  };
   for (t.rounds = 1; t.rounds <= opt.max_rounds; ++t.rounds) {
+    // The LCP in the unknowns of the zone K is condensed onto (condensed_stiffness.hpp): it
+    // must hold every block the required candidates touch, and under displacement control the
+    // monitor's.
+    std::vector<char> needed(static_cast<std::size_t>(model.n_blocks()), 0);
+    bool required = false;
+    for (std::size_t p = 0; p < candidate.size(); ++p)
+      if (candidate[p] == kRequired) {
+        blocks_of(static_cast<int>(p), needed);
+        required = true;
+      }
+    if (required) {
+      if (control)
+        needed[static_cast<std::size_t>(model.monitors[ctx.stage.control->monitor].block)] = 1;
+      solvers.condense(model, needed, opt);
+    }
+    clock.lap("increments: condensation");
     std::vector<int> candidates;
     for (std::size_t p = 0; p < candidate.size(); ++p)
-      if (candidate[p])
+      if (required && in_lcp(static_cast<int>(p)))
         candidates.push_back(static_cast<int>(p));
     const YieldSystem sys = assemble_yield_system(model, ctx.points, s.points, s.u, candidates);
     clock.lap("increments: yield rows");
@@ -393,18 +427,6 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     Eigen::VectorXd z = Eigen::VectorXd::Zero(m);
     std::optional<Eigen::VectorXd> plastic_du;  // K^-1 Phi (z - gap_old), once known
     if (m > 0) {
-      // The LCP in the unknowns of the zone K is condensed onto (condensed_stiffness.hpp): it
-      // must hold every block the rows touch, and under displacement control the monitor's.
-      std::vector<char> needed(static_cast<std::size_t>(model.n_blocks()), 0);
-      for (int p : candidates) {
-        needed[static_cast<std::size_t>(ctx.points[p].block_i)] = 1;
-        if (ctx.points[p].is_interface() && ctx.points[p].block_j != kGround)
-          needed[static_cast<std::size_t>(ctx.points[p].block_j)] = 1;
-      }
-      if (control)
-        needed[static_cast<std::size_t>(model.monitors[ctx.stage.control->monitor].block)] = 1;
-      solvers.condense(model, needed, opt);
-      clock.lap("increments: condensation");
       const CondensedStiffness& condensed = *solvers.condensed;
       const YieldSystem local = condensed.local(sys);
       const Eigen::VectorXd local_control =
@@ -538,10 +560,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     clock.lap("increments: update and check");
     std::size_t added = 0;
     for (int p : violators) {
-      if (!candidate[p]) {
-        candidate[p] = 1;
+      if (!in_lcp(p))
         ++added;
-      }
+      candidate[p] = kRequired;
     }
     if (added > 0) {
       // The next round's flow spreads further: the points this round's plastic flow moved
