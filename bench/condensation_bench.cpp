@@ -33,75 +33,67 @@ std::vector<char> central_zone(const Model& m, double fraction) {
   return zone;
 }
 
-void set_counters(benchmark::State& state, const Model& m, const SparseCholesky& k) {
-  state.counters["blocks"] = m.n_blocks();
-  state.counters["zone_unknowns"] = static_cast<double>(k.trailing_unknowns().size());
-  state.counters["factor_nnz"] = static_cast<double>(k.factor_nonzeros());
-}
+// The brick mass of state.range(0) blocks, its K and the central zone; `factorized`: K also
+// analyzed with the zone last and factorized.
+struct ZoneCase {
+  ZoneCase(const benchmark::State& state, bool factorized)
+      : model(build_model(bench::brick_mass_case(static_cast<int>(state.range(0))))),
+        lower(assemble_stiffness_lower(model)),
+        zone(central_zone(model, 0.125)) {
+    if (factorized) {
+      k.analyze_last(lower, 6, zone);
+      k.factorize(lower);
+    }
+  }
+  void set_counters(benchmark::State& state) const {
+    state.counters["blocks"] = model.n_blocks();
+    state.counters["zone_unknowns"] = static_cast<double>(k.trailing_unknowns().size());
+    state.counters["factor_nnz"] = static_cast<double>(k.factor_nonzeros());
+  }
+  Model model;
+  SparseMatrix lower;
+  std::vector<char> zone;
+  SparseCholesky k;
+};
 
 void BM_AnalyzeZoneLast(benchmark::State& state) {
-  const Model m = build_model(bench::brick_mass_case(static_cast<int>(state.range(0))));
-  const SparseMatrix lower = assemble_stiffness_lower(m);
-  const std::vector<char> zone = central_zone(m, 0.125);
-  SparseCholesky k;
+  ZoneCase c(state, false);
   for (auto _ : state)
-    k.analyze_last(lower, 6, zone);
-  set_counters(state, m, k);
+    c.k.analyze_last(c.lower, 6, c.zone);
+  c.set_counters(state);
 }
 
 void BM_FactorizeZoneLast(benchmark::State& state) {
-  const Model m = build_model(bench::brick_mass_case(static_cast<int>(state.range(0))));
-  const SparseMatrix lower = assemble_stiffness_lower(m);
-  SparseCholesky k;
-  k.analyze_last(lower, 6, central_zone(m, 0.125));
+  ZoneCase c(state, true);
   for (auto _ : state)
-    benchmark::DoNotOptimize(k.factorize(lower));
-  set_counters(state, m, k);
+    benchmark::DoNotOptimize(c.k.factorize(c.lower));
+  c.set_counters(state);
 }
 
 void BM_SchurComplement(benchmark::State& state) {
-  const Model m = build_model(bench::brick_mass_case(static_cast<int>(state.range(0))));
-  const SparseMatrix lower = assemble_stiffness_lower(m);
-  SparseCholesky k;
-  k.analyze_last(lower, 6, central_zone(m, 0.125));
-  k.factorize(lower);
+  ZoneCase c(state, true);
   for (auto _ : state)
-    benchmark::DoNotOptimize(k.schur_complement(lower));
-  set_counters(state, m, k);
-  state.counters["schur_nnz"] = static_cast<double>(k.schur_complement(lower).nonZeros());
+    benchmark::DoNotOptimize(c.k.schur_complement(c.lower));
+  c.set_counters(state);
+  state.counters["schur_nnz"] = static_cast<double>(c.k.schur_complement(c.lower).nonZeros());
 }
 
 void BM_FactorizeSchur(benchmark::State& state) {
-  const Model m = build_model(bench::brick_mass_case(static_cast<int>(state.range(0))));
-  const SparseMatrix lower = assemble_stiffness_lower(m);
-  SparseCholesky k;
-  k.analyze_last(lower, 6, central_zone(m, 0.125));
-  k.factorize(lower);
-  const SparseMatrix s = k.schur_complement(lower);
+  ZoneCase c(state, true);
+  const SparseMatrix s = c.k.schur_complement(c.lower);
   SparseCholesky chol;
   chol.analyze(s, 6);
   for (auto _ : state)
     benchmark::DoNotOptimize(chol.factorize(s));
-  set_counters(state, m, k);
+  c.set_counters(state);
   state.counters["schur_factor_nnz"] = static_cast<double>(chol.factor_nonzeros());
 }
 
-BENCHMARK(BM_AnalyzeZoneLast)
-    ->RangeMultiplier(10)
-    ->Range(1000, 100000)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_FactorizeZoneLast)
-    ->RangeMultiplier(10)
-    ->Range(1000, 100000)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SchurComplement)
-    ->RangeMultiplier(10)
-    ->Range(1000, 100000)
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_FactorizeSchur)
-    ->RangeMultiplier(10)
-    ->Range(1000, 100000)
-    ->Unit(benchmark::kMillisecond);
+#define BIMROCK_ZONE_SIZES RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond)
+BENCHMARK(BM_AnalyzeZoneLast)->BIMROCK_ZONE_SIZES;
+BENCHMARK(BM_FactorizeZoneLast)->BIMROCK_ZONE_SIZES;
+BENCHMARK(BM_SchurComplement)->BIMROCK_ZONE_SIZES;
+BENCHMARK(BM_FactorizeSchur)->BIMROCK_ZONE_SIZES;
 
 }  // namespace
 }  // namespace bimrock
