@@ -25,10 +25,8 @@ CondensedStiffness::CondensedStiffness(SparseCholesky& k, const SparseMatrix& k_
   select_.setFromTriplets(ones.begin(), ones.end());
   own_factor_->analyze(own_lower_, kBlock);
   // S is positive definite where K is (a Schur complement of it): a failure is round-off in a
-  // nearly singular K, and the same K has just been factorized.
-  if (!own_factor_->factorize(own_lower_))
-    throw std::logic_error(
-        "CondensedStiffness: the Schur complement of K is not positive definite");
+  // nearly singular K, reported by factorized() (the caller goes on with K itself).
+  factorized_ = own_factor_->factorize(own_lower_);
   lower_ = &own_lower_;
   factor_ = own_factor_.get();
 }

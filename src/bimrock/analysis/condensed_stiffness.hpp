@@ -31,6 +31,9 @@ class CondensedStiffness {
   CondensedStiffness(const CondensedStiffness&) = delete;
   CondensedStiffness& operator=(const CondensedStiffness&) = delete;
 
+  /// S's factorization succeeded (false only where round-off in a nearly singular K made S
+  /// indefinite: then it must not be used).
+  [[nodiscard]] bool factorized() const { return factorized_; }
   /// S = K: nothing condensed.
   [[nodiscard]] bool whole() const { return zone_.empty(); }
   [[nodiscard]] bool covers(int block) const {
@@ -55,6 +58,7 @@ class CondensedStiffness {
   std::unique_ptr<SparseCholesky> own_factor_;
   const SparseMatrix* lower_ = nullptr;
   const SparseCholesky* factor_ = nullptr;
+  bool factorized_ = true;
 };
 
 /// The blocks of `needed` and rings of their neighbours (blocks that share an interface), ring

@@ -40,11 +40,11 @@ constexpr std::size_t kNearPerReached = 2;
 /// towards the bound (each carried one shrinks the bracket tenfold) until one fails.
 constexpr double kAimAtBound = 0.9;
 
-/// The zone K is condensed onto holds the blocks of the candidate points that ask for it and the
-/// last zone, and kZoneGrowth times as many blocks around them (at least
-/// PlasticOptions::least_zone_blocks). Each new zone costs a factorization of K in a new order
-/// (~0.4 s at 10^4 blocks), a larger zone costs more in every active-set iteration: measured on
-/// the plastic model of `bimrock bench` at 10^4 blocks (docs/performance.md, session 12).
+/// The zone K is condensed onto: rings of neighbours around the blocks of the required
+/// candidate points, to kZoneGrowth times their number and kZoneRegrowth times the last zone
+/// (at least PlasticOptions::least_zone_blocks). Each new zone costs a factorization of K in a
+/// new order (~0.45 s at 10^4 blocks), a larger zone costs more in every active-set iteration:
+/// measured on the plastic model of `bimrock bench` (docs/performance.md, session 12).
 constexpr double kZoneGrowth = 1.5;
 constexpr double kZoneRegrowth = 1.2;
 
@@ -94,6 +94,8 @@ struct LcpSolvers {
       condensed = std::make_unique<CondensedStiffness>(k, k_lower);
     else
       condensed = std::make_unique<CondensedStiffness>(k, k_lower, zone);
+    if (!condensed->factorized())  // round-off in a nearly singular K: K itself, from now on
+      condensed = std::make_unique<CondensedStiffness>(k, k_lower);
     ++condensations;
     if (std::getenv("BIMROCK_DEBUG_LCP"))
       std::fprintf(stderr, "condensation %d: %d blocks needed, zone of %d\n", condensations,
