@@ -5,13 +5,16 @@
 
 namespace bimrock {
 
+namespace {
+constexpr int kBlock = 6;  // unknowns per block
+}  // namespace
+
 CondensedStiffness::CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower)
     : lower_(&k_lower), factor_(&k) {}
 
 CondensedStiffness::CondensedStiffness(SparseCholesky& k, const SparseMatrix& k_lower,
                                        std::vector<char> zone)
     : zone_(std::move(zone)), own_factor_(std::make_unique<SparseCholesky>()) {
-  constexpr int kBlock = 6;  // unknowns per block
   k.analyze_last(k_lower, kBlock, zone_);
   if (!k.factorize(k_lower))
     throw std::logic_error("CondensedStiffness: K, positive definite before, is not now");
@@ -32,7 +35,7 @@ CondensedStiffness::CondensedStiffness(SparseCholesky& k, const SparseMatrix& k_
 }
 
 int CondensedStiffness::zone_blocks() const {
-  return whole() ? static_cast<int>(lower_->rows() / 6)
+  return whole() ? static_cast<int>(lower_->rows() / kBlock)
                  : static_cast<int>(std::count(zone_.begin(), zone_.end(), 1));
 }
 

@@ -370,16 +370,10 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   // The warm start: the rows that yielded in the last increment, then those of the last round
   // (a round adds only the points the last one violated: its solution is nearly this one's).
   std::set<std::pair<int, int>> warm_rows = solvers.last_active;
-  const auto blocks_of = [&](int p, std::vector<char>& flags) {
-    flags[static_cast<std::size_t>(ctx.points[p].block_i)] = 1;
-    if (ctx.points[p].is_interface() && ctx.points[p].block_j != kGround)
-      flags[static_cast<std::size_t>(ctx.points[p].block_j)] = 1;
-  };
   const auto held = [&](int p) {
     const YieldPoint& point = ctx.points[p];
     return solvers.condensed && solvers.condensed->covers(point.block_i) &&
-           (!point.is_interface() || point.block_j == kGround ||
-            solvers.condensed->covers(point.block_j));
+           (point.block_j == kGround || solvers.condensed->covers(point.block_j));
   };
   const auto in_lcp = [&](int p) {
     return candidate[p] == kRequired || (candidate[p] == kNear && held(p));
@@ -392,7 +386,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     bool required = false;
     for (std::size_t p = 0; p < candidate.size(); ++p)
       if (candidate[p] == kRequired) {
-        blocks_of(static_cast<int>(p), needed);
+        flag_blocks(ctx.points[p], needed);
         required = true;
       }
     if (required) {

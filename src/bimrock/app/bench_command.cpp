@@ -123,9 +123,7 @@ std::pair<int, int> plastic_zone(const Model& model, const std::vector<YieldPoin
     const PlasticState& s = st.points[p];
     if (s.slip == 0.0 && s.gap == 0.0 && s.plastic.isZero(0.0))
       continue;
-    in[static_cast<std::size_t>(points[p].block_i)] = 1;
-    if (points[p].is_interface() && points[p].block_j != kGround)
-      in[static_cast<std::size_t>(points[p].block_j)] = 1;
+    flag_blocks(points[p], in);
   }
   std::vector<char> boundary(in.size(), 0);
   for (const Interface& f : model.interfaces) {

@@ -30,6 +30,13 @@ struct YieldPointIndex {
   std::vector<int> block_points;                     ///< per block
 };
 
+/// Flags the blocks a point's rows act on (one for a block point or a support's, else two).
+inline void flag_blocks(const YieldPoint& p, std::vector<char>& flags) {
+  flags[static_cast<std::size_t>(p.block_i)] = 1;
+  if (p.block_j != kGround)
+    flags[static_cast<std::size_t>(p.block_j)] = 1;
+}
+
 /// @param index if given, filled with where each point stands
 std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* index = nullptr);
 

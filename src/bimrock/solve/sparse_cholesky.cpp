@@ -89,10 +89,6 @@ CholmodMatrix block_pattern(const CholmodMatrix& lower, int block_size) {
   return pattern;
 }
 
-}  // namespace
-
-namespace {
-
 // The ordering CHOLMOD's default strategy gives a symmetric pattern (lower triangle).
 std::vector<std::int64_t> default_ordering(const CholmodMatrix& pattern, cholmod_common& cm) {
   cholmod_sparse p = view(pattern);
@@ -122,6 +118,15 @@ CholmodMatrix induced_pattern(const CholmodMatrix& lower, const std::vector<std:
   out.setFromTriplets(entries.begin(), entries.end());
   out.makeCompressed();
   return out;
+}
+
+// The permutation of the unknowns that orders whole blocks of block_size as `coarse` does.
+std::vector<std::int64_t> expand_blocks(const std::vector<std::int64_t>& coarse, int block_size) {
+  std::vector<std::int64_t> perm(coarse.size() * static_cast<std::size_t>(block_size));
+  for (std::size_t k = 0; k < coarse.size(); ++k)
+    for (int d = 0; d < block_size; ++d)
+      perm[block_size * k + d] = block_size * coarse[k] + d;
+  return perm;
 }
 
 }  // namespace
@@ -160,11 +165,8 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
   if (block_size > 1 && lower.rows() % block_size == 0 && lower.rows() > block_size) {
     // Order the block graph with CHOLMOD's default strategy, expand the permutation to the
     // unknowns, and analyze the full matrix with that given ordering.
-    const std::vector<std::int64_t> coarse = default_ordering(block_pattern(lower, block_size), cm);
-    std::vector<std::int64_t> perm(static_cast<std::size_t>(lower.rows()));
-    for (std::size_t k = 0; k < coarse.size(); ++k)
-      for (int d = 0; d < block_size; ++d)
-        perm[block_size * k + d] = block_size * coarse[k] + d;
+    const std::vector<std::int64_t> perm =
+        expand_blocks(default_ordering(block_pattern(lower, block_size), cm), block_size);
     analyze_given(lower, perm.data(), false);
   } else {
     cholmod_sparse a = view(lower);
@@ -212,10 +214,7 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
     for (std::int64_t k : order)
       coarse.push_back(g[static_cast<std::size_t>(k)]);
   }
-  std::vector<std::int64_t> perm(static_cast<std::size_t>(lower.rows()));
-  for (std::size_t k = 0; k < coarse.size(); ++k)
-    for (int d = 0; d < block_size; ++d)
-      perm[block_size * k + d] = block_size * coarse[k] + d;
+  const std::vector<std::int64_t> perm = expand_blocks(coarse, block_size);
   analyze_given(lower, perm.data(), true);
   if (!impl_->factor)
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
