@@ -11,6 +11,7 @@
 #include <bimrock/assembly/yield_modes.hpp>
 #include <bimrock/assembly/yield_points.hpp>
 #include <bimrock/assembly/yield_system.hpp>
+#include <bimrock/assembly/yield_values.hpp>
 #include <bimrock/model/reference_cases.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
@@ -42,23 +43,12 @@ std::vector<int> candidate_points(const ModelContext& ctx, const AnalysisState& 
                                   const Eigen::VectorXd& du, const AnalysisState* after) {
   const double yield_tolerance = PlasticOptions{}.yield_tolerance;
   const std::size_t n = ctx.points.size();
-  std::vector<double> predicted_f(n);
+  const YieldEvaluator evaluator(ctx.model, ctx.points);
+  YieldValues now;
+  YieldValues predicted_f;  // f + df: f is linear in the stress at a fixed plastic state
   double scale = 0.0;
-  for (std::size_t p = 0; p < n; ++p) {
-    const YieldPoint& point = ctx.points[p];
-    const Eigen::VectorXd stress = local_stress(ctx.model, point, before.points[p], before.u);
-    const LocalYield y = linearize(ctx.model, point, before.points[p], stress);
-    const Eigen::VectorXd dstress =
-        local_stiffness(ctx.model, point) * local_strain(ctx.model, point, du);
-    predicted_f[p] = (y.f + y.a * dstress).maxCoeff();
-    scale =
-        std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
-  }
-  const Eigen::VectorXd u_elastic = before.u + du;
-  for (std::size_t p = 0; p < n; ++p)
-    scale = std::max(
-        scale,
-        local_stress(ctx.model, ctx.points[p], before.points[p], u_elastic).cwiseAbs().maxCoeff());
+  evaluator.evaluate(before.points, before.u, now, &scale);
+  evaluator.evaluate(before.points, Eigen::VectorXd(before.u + du), predicted_f, &scale);
   const double tol = yield_tolerance * std::max(scale, 1.0);
   std::vector<int> candidates;
   for (std::size_t p = 0; p < n; ++p) {
@@ -68,7 +58,7 @@ std::vector<int> candidate_points(const ModelContext& ctx, const AnalysisState& 
       const PlasticState& a = after->points[p];
       changed = a.plastic != b.plastic || a.slip != b.slip || a.gap != b.gap;
     }
-    if (b.gap > 0.0 || predicted_f[p] > tol || changed)
+    if (b.gap > 0.0 || predicted_f.largest(p) > tol || changed)
       candidates.push_back(static_cast<int>(p));
   }
   return candidates;

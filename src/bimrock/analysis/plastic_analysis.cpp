@@ -17,6 +17,7 @@
 #include <bimrock/analysis/flexibility_columns.hpp>
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/assembly/kinematics.hpp>
+#include <bimrock/assembly/yield_values.hpp>
 #include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/reduced_tangent.hpp>
@@ -202,10 +203,11 @@ struct StageContext {
   const std::vector<YieldPoint>& points;
   const SparseCholesky& k;
   const Stage& stage;
-  Eigen::VectorXd x_ref;       // K^-1 P_stage: displacement of the whole stage load, elastic
-  Eigen::VectorXd control;     // displacement control: u_monitor . direction = control . U
-  double control_rate = 0.0;   // control . x_ref
-  Timings* timings = nullptr;  // phases of the increments: candidates, yield rows, LCP, check
+  const YieldEvaluator& yield;  // every yield function of every point, for the checks
+  Eigen::VectorXd x_ref;        // K^-1 P_stage: displacement of the whole stage load, elastic
+  Eigen::VectorXd control;      // displacement control: u_monitor . direction = control . U
+  double control_rate = 0.0;    // control . x_ref
+  Timings* timings = nullptr;   // phases of the increments: candidates, yield rows, LCP, check
 };
 
 struct Trial {
@@ -226,25 +228,19 @@ struct Trial {
   int rounds = 0;
 };
 
-Eigen::VectorXd local_of(const Model& model, const YieldPoint& p, const Eigen::VectorXd& du) {
-  return local_stiffness(model, p) * local_strain(model, p, du);
-}
-
 // Marks as near candidates the points not yet candidates whose yield functions f reach tol within
-// `margin` times their change (`change(p)`: a vector or an Eigen expression; modes where it is
-// positive), nearest first, at most `most`.
-template <class Change>
-void join_nearest(const std::vector<Eigen::VectorXd>& f, const Change& change, double tol,
-                  double margin, std::size_t most, std::vector<char>& candidate) {
+// `margin` times their change `df` (flat as f; modes where it is positive), nearest first, at
+// most `most`.
+void join_nearest(const YieldValues& f, const Eigen::VectorXd& df, double tol, double margin,
+                  std::size_t most, std::vector<char>& candidate) {
   std::vector<std::pair<double, std::size_t>> near;  // (margin it needs, point)
   for (std::size_t p = 0; p < candidate.size(); ++p) {
     if (candidate[p])
       continue;
-    decltype(auto) df = change(p);  // a reference or an expression: no copy
     double needed = std::numeric_limits<double>::infinity();
-    for (Eigen::Index i = 0; i < f[p].size(); ++i)
+    for (Eigen::Index i = f.first[p]; i < f.first[p + 1]; ++i)
       if (df(i) > 0.0)
-        needed = std::min(needed, (tol - f[p](i)) / df(i));
+        needed = std::min(needed, (tol - f.f(i)) / df(i));
     if (needed < margin)
       near.emplace_back(needed, p);
   }
@@ -255,19 +251,13 @@ void join_nearest(const std::vector<Eigen::VectorXd>& f, const Change& change, d
 }
 
 // The largest violation of any yield function (unscaled, in Pa) and the points that violate
-// them by more than tol.
+// them by more than tol; `all` gets every value.
 double check_all_yield_functions(const StageContext& ctx, const AnalysisState& s, double tol,
-                                 std::vector<int>& violators,
-                                 std::vector<Eigen::VectorXd>* all = nullptr) {
+                                 std::vector<int>& violators, YieldValues& all) {
+  ctx.yield.evaluate(s.points, s.u, all);
   double worst = -std::numeric_limits<double>::infinity();
-  if (all != nullptr)
-    all->resize(ctx.points.size());
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
-    const Eigen::VectorXd stress = local_stress(ctx.model, ctx.points[p], s.points[p], s.u);
-    Eigen::VectorXd fs = linearize(ctx.model, ctx.points[p], s.points[p], stress).f;
-    const double f = fs.maxCoeff();
-    if (all != nullptr)
-      (*all)[p] = std::move(fs);
+    const double f = all.largest(p);
     worst = std::max(worst, f);
     if (f > tol)
       violators.push_back(static_cast<int>(p));
@@ -331,39 +321,25 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   // more than the tolerance of the final check: a joint that sits exactly on its tension
   // cut-off, as the vertical joints of a free-standing wall do, is not a candidate for the
   // round-off of its stress); then the points nearest to it, within the candidate margin.
-  std::vector<Eigen::VectorXd> predicted_f(ctx.points.size());  // f + df, per mode
-  std::vector<Eigen::VectorXd> change_f(ctx.points.size());     // |df|
+  // f is linear in the stress for a given plastic state, so f + df is f at U + dU.
+  YieldValues now;
+  YieldValues predicted_f;  // f + df, per mode
   double scale = 0.0;
-  for (std::size_t p = 0; p < ctx.points.size(); ++p) {
-    const YieldPoint& point = ctx.points[p];
-    const Eigen::VectorXd stress = local_stress(model, point, s.points[p], s.u);
-    const LocalYield y = linearize(model, point, s.points[p], stress);
-    const Eigen::VectorXd df = y.a * local_of(model, point, du_elastic);
-    predicted_f[p] = y.f + df;
-    change_f[p] = df.cwiseAbs();
-    scale =
-        std::max({scale, stress.cwiseAbs().maxCoeff(), (y.f - y.a * stress).cwiseAbs().maxCoeff()});
-  }
-  const Eigen::VectorXd u_elastic = s.u + du_elastic;  // once: not per point
-  for (std::size_t p = 0; p < ctx.points.size(); ++p) {
-    const Eigen::VectorXd stress = local_stress(model, ctx.points[p], s.points[p], u_elastic);
-    scale = std::max(scale, stress.cwiseAbs().maxCoeff());
-  }
+  ctx.yield.evaluate(s.points, s.u, now, &scale);
+  ctx.yield.evaluate(s.points, Eigen::VectorXd(s.u + du_elastic), predicted_f, &scale);
+  const Eigen::VectorXd change_f = (predicted_f.f - now.f).cwiseAbs();  // |df|
   const double tol = opt.yield_tolerance * std::max(scale, 1.0);
   std::vector<char> candidate(ctx.points.size(), 0);
   std::size_t reached = 0;
   for (std::size_t p = 0; p < ctx.points.size(); ++p) {
-    if (s.points[p].gap > 0.0 || predicted_f[p].maxCoeff() > tol) {
+    if (s.points[p].gap > 0.0 || predicted_f.largest(p) > tol) {
       candidate[p] = kRequired;
       ++reached;
     }
   }
   // No more than kNearPerReached for each point that reaches yield: a large step from an
   // unloaded state (a stage's first) brings nearly every point within the margin.
-  const auto predicted_change = [&](std::size_t p) -> const Eigen::VectorXd& {
-    return change_f[p];
-  };
-  join_nearest(predicted_f, predicted_change, tol, opt.candidate_margin, kNearPerReached * reached,
+  join_nearest(predicted_f, change_f, tol, opt.candidate_margin, kNearPerReached * reached,
                candidate);
   clock.lap("increments: candidates");
 
@@ -551,8 +527,8 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     update_state(sys, lambda, z, ctx.points, t.next);
     // check_all_yield_functions: add the violated points that were not in the LCP.
     std::vector<int> violators;
-    std::vector<Eigen::VectorXd> f_next;
-    check_all_yield_functions(ctx, t.next, tol, violators, &f_next);
+    YieldValues f_next;
+    check_all_yield_functions(ctx, t.next, tol, violators, f_next);
     clock.lap("increments: update and check");
     std::size_t added = 0;
     for (int p : violators) {
@@ -564,9 +540,8 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       // The next round's flow spreads further: the points this round's plastic flow moved
       // towards yield (f - f_predicted, the change the elastic predictor did not foresee)
       // join it where that change, candidate_margin times over, reaches yield.
-      const auto flow_change = [&](std::size_t p) { return f_next[p] - predicted_f[p]; };
-      join_nearest(f_next, flow_change, tol, opt.candidate_margin, kNearPerReached * added,
-                   candidate);
+      join_nearest(f_next, Eigen::VectorXd(f_next.f - predicted_f.f), tol, opt.candidate_margin,
+                   kNearPerReached * added, candidate);
     }
     warm_rows.clear();
     for (int r = 0; r < m; ++r)
@@ -676,9 +651,10 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
   LcpSolvers solvers(k, lower);
+  const YieldEvaluator yield(model, result.points);
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
-    StageContext ctx{model, result.points, k, stage, {}, {}, 0.0, &result.timings};
+    StageContext ctx{model, result.points, k, stage, yield, {}, {}, 0.0, &result.timings};
     {
       ScopedTimer t(result.timings, "stage loads");
       ctx.x_ref = k.solve(assemble_loads(model, stage.loads));

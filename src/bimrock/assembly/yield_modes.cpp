@@ -51,21 +51,50 @@ ModeKind mode_kind(const YieldPoint& p, int mode) {
                      : ModeKind::opening;
 }
 
+Eigen::Vector3d joint_values(const JointStrength& law, const PlasticState& s, double sigma_n,
+                             double tau) {
+  const double tan_phi = law.friction.value(s.slip);
+  const double c = law.cohesion.value(s.slip);
+  const double sigma_t = law.tensile.value(s.max_gap);
+  return {tau + sigma_n * tan_phi - c, -tau + sigma_n * tan_phi - c, sigma_n - sigma_t};
+}
+
+BlockPlanes block_planes(const BlockStrength& law) {
+  const int n = law.planes;
+  const double inscribed = std::cos(M_PI / n);
+  const double sin_phi = law.criterion == BlockStrength::Criterion::tresca ? 0.0 : law.friction;
+  const double sin_psi = law.criterion == BlockStrength::Criterion::tresca ? 0.0 : law.dilation;
+  const double cos_phi = std::sqrt(1.0 - sin_phi * sin_phi);
+  BlockPlanes planes;
+  planes.a.resize(n, 3);
+  planes.g.resize(n, 3);
+  for (int k = 0; k < n; ++k) {
+    // Plane k of the polygon inscribed in the circle of radius c cos(phi) - s sin(phi) around
+    // ((s_x - s_y)/2, tau) = 0, with s = (s_x + s_y)/2 (tension positive).
+    const double alpha = 2.0 * M_PI * k / n;
+    const double ca = std::cos(alpha);
+    const double sa = std::sin(alpha);
+    planes.a.row(k) << 0.5 * ca + 0.5 * sin_phi * inscribed, -0.5 * ca + 0.5 * sin_phi * inscribed,
+        sa;
+    planes.g.row(k) << 0.5 * ca + 0.5 * sin_psi * inscribed, -0.5 * ca + 0.5 * sin_psi * inscribed,
+        sa;
+  }
+  planes.strength = law.cohesion * cos_phi * inscribed;
+  return planes;
+}
+
 namespace {
 
 LocalYield joint_modes(const JointStrength& law, const PlasticState& s, const Eigen::VectorXd& r) {
   const double sigma_n = r(0);
   const double tau = r(1);
   const double tan_phi = law.friction.value(s.slip);
-  const double c = law.cohesion.value(s.slip);
-  const double sigma_t = law.tensile.value(s.max_gap);
   LocalYield y;
   y.a.resize(3, 2);
   y.g.resize(3, 2);
   y.a << tan_phi, 1.0, tan_phi, -1.0, 1.0, 0.0;
   y.g << law.dilation, 1.0, law.dilation, -1.0, 1.0, 0.0;
-  y.f.resize(3);
-  y.f << tau + sigma_n * tan_phi - c, -tau + sigma_n * tan_phi - c, sigma_n - sigma_t;
+  y.f = joint_values(law, s, sigma_n, tau);
   // Softening of c and tan(phi) with slip kappa_s = sum of both slip multipliers; of sigma_t
   // with the opening while the joint opens beyond its largest opening so far.
   y.h = Eigen::MatrixXd::Zero(3, 3);
@@ -77,26 +106,12 @@ LocalYield joint_modes(const JointStrength& law, const PlasticState& s, const Ei
 }
 
 LocalYield block_modes(const BlockStrength& law, const Eigen::VectorXd& sigma) {
-  const int n = law.planes;
-  const double inscribed = std::cos(M_PI / n);
-  const double sin_phi = law.criterion == BlockStrength::Criterion::tresca ? 0.0 : law.friction;
-  const double sin_psi = law.criterion == BlockStrength::Criterion::tresca ? 0.0 : law.dilation;
-  const double cos_phi = std::sqrt(1.0 - sin_phi * sin_phi);
+  const BlockPlanes planes = block_planes(law);
   LocalYield y;
-  y.a.resize(n, 3);
-  y.g.resize(n, 3);
-  y.f.resize(n);
-  y.h = Eigen::MatrixXd::Zero(n, n);
-  for (int k = 0; k < n; ++k) {
-    // Plane k of the polygon inscribed in the circle of radius c cos(phi) - s sin(phi) around
-    // ((s_x - s_y)/2, tau) = 0, with s = (s_x + s_y)/2 (tension positive).
-    const double alpha = 2.0 * M_PI * k / n;
-    const double ca = std::cos(alpha);
-    const double sa = std::sin(alpha);
-    y.a.row(k) << 0.5 * ca + 0.5 * sin_phi * inscribed, -0.5 * ca + 0.5 * sin_phi * inscribed, sa;
-    y.g.row(k) << 0.5 * ca + 0.5 * sin_psi * inscribed, -0.5 * ca + 0.5 * sin_psi * inscribed, sa;
-    y.f(k) = y.a.row(k).dot(sigma) - law.cohesion * cos_phi * inscribed;
-  }
+  y.f = planes.a * sigma - Eigen::VectorXd::Constant(planes.a.rows(), planes.strength);
+  y.a = planes.a;
+  y.g = planes.g;
+  y.h = Eigen::MatrixXd::Zero(law.planes, law.planes);
   return y;
 }
 

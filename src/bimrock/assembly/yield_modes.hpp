@@ -43,6 +43,19 @@ struct LocalYield {
   Eigen::MatrixXd h;  ///< hardening: h_ab = -(df_a/dkappa)(dkappa/dlambda_b); negative softens
 };
 
+/// The yield functions of a joint point at stress (sigma_n, tau): slip +, slip -, opening
+/// (Mohr-Coulomb with a tension cut-off, softened by its state).
+Eigen::Vector3d joint_values(const JointStrength& law, const PlasticState& s, double sigma_n,
+                             double tau);
+
+/// The planes of a block's linearized criterion: f_k = a_k . sigma - strength, flow g_k.
+struct BlockPlanes {
+  Eigen::MatrixXd a;
+  Eigen::MatrixXd g;
+  double strength = 0.0;  ///< c cos(phi) cos(pi / n)
+};
+BlockPlanes block_planes(const BlockStrength& law);
+
 /// @param stress the point's current stress (local_stress)
 LocalYield linearize(const Model& model, const YieldPoint& p, const PlasticState& s,
                      const Eigen::VectorXd& stress);

@@ -366,8 +366,68 @@ Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
+  if (factorized_ && !trailing_.empty() && impl_->factor->is_super) {
+    const auto* perm = static_cast<const std::int64_t*>(impl_->factor->Perm);
+    const auto first = n_ - static_cast<std::int64_t>(trailing_.size());
+    bool leading_zero = true;
+    for (std::int64_t k = 0; k < first && leading_zero; ++k)
+      leading_zero = b(perm[k]) == 0.0;
+    if (leading_zero)
+      return solve_from_trailing(b);
+  }
   Eigen::MatrixXd m = b;
   return solve(m).col(0);
+}
+
+Eigen::VectorXd SparseCholesky::solve_from_trailing(const Eigen::VectorXd& b) const {
+  const cholmod_factor* f = impl_->factor;
+  const auto start = std::chrono::steady_clock::now();
+  const auto* perm = static_cast<const std::int64_t*>(f->Perm);
+  const auto first = n_ - static_cast<std::int64_t>(trailing_.size());
+  // L y = P b, supernode by supernode from the first that holds a trailing column: before it,
+  // y = 0. A supernode that starts among the leading columns is solved from `first` on (its
+  // leading columns' y are 0 too).
+  Eigen::MatrixXd rhs_y(n_, 1);  // CHOLMOD's dense view wants a matrix
+  auto y = rhs_y.col(0);
+  for (std::int64_t k = 0; k < n_; ++k)
+    y(k) = b(perm[k]);
+  const auto* super = static_cast<const std::int64_t*>(f->super);
+  const auto* pi = static_cast<const std::int64_t*>(f->pi);
+  const auto* px = static_cast<const std::int64_t*>(f->px);
+  const auto* ls = static_cast<const std::int64_t*>(f->s);
+  const auto* lx = static_cast<const double*>(f->x);
+  for (std::size_t sn = 0; sn < f->nsuper; ++sn) {
+    const std::int64_t k1 = super[sn];
+    const std::int64_t k2 = super[sn + 1];
+    if (k2 <= first)
+      continue;
+    const std::int64_t j0 = std::max(k1, first);
+    const std::int64_t nrow = pi[sn + 1] - pi[sn];
+    const std::int64_t ncol = k2 - j0;
+    const std::int64_t offset = j0 - k1;  // the supernode's rows start with its own columns
+    const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> l(
+        lx + px[sn] + offset * nrow + offset, nrow - offset, ncol, Eigen::OuterStride<>(nrow));
+    Eigen::VectorXd x = y.segment(j0, ncol);
+    l.topRows(ncol).triangularView<Eigen::Lower>().solveInPlace(x);
+    y.segment(j0, ncol) = x;
+    const Eigen::VectorXd below = l.bottomRows(nrow - offset - ncol) * x;
+    const std::int64_t* rows = ls + pi[sn] + offset + ncol;
+    for (Eigen::Index i = 0; i < below.size(); ++i)
+      y(rows[i]) -= below(i);
+  }
+  // L^T x' = y with CHOLMOD, then x = P^T x'.
+  cholmod_dense rhs = view(rhs_y);
+  cholmod_dense* xp = cholmod_l_solve(CHOLMOD_Lt, impl_->factor, &rhs, &impl_->common);
+  if (!xp)
+    throw std::runtime_error("CHOLMOD solve failed");
+  const auto* values = static_cast<const double*>(xp->x);
+  Eigen::VectorXd x(n_);
+  for (std::int64_t k = 0; k < n_; ++k)
+    x(perm[k]) = values[k];
+  cholmod_l_free_dense(&xp, &impl_->common);
+  ++work_.solved_columns;
+  work_.solve_seconds += seconds_since(start);
+  return x;
 }
 
 }  // namespace bimrock
