@@ -5,6 +5,7 @@
 // one supernodal.
 #include <functional>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -122,6 +123,43 @@ TEST(SparseCholesky, SchurComplementOfTheBlocksOrderedLastIsTheDenseOne) {
     for (std::size_t i = 0; i < p.size(); ++i)
       EXPECT_EQ(p[i] % 6, static_cast<std::int64_t>(i % 6));
   }
+}
+
+// Nested zones in one order: the Schur complement onto each is read from the same factor.
+TEST(SparseCholesky, SchurComplementOfEachNestedZoneIsTheDenseOne) {
+  constexpr int kSide = 12;
+  const CholmodMatrix lower = grid(kSide, 11);
+  const Eigen::MatrixXd k = Eigen::MatrixXd(lower).selfadjointView<Eigen::Lower>();
+  // Level 2: a patch; level 1: one ring of blocks around it; 0: the rest.
+  std::vector<char> levels(kSide * kSide, 0);
+  for (int y = 0; y < kSide; ++y)
+    for (int x = 0; x < kSide; ++x) {
+      const bool inner = x >= 5 && x < 8 && y >= 4 && y < 7;
+      const bool ring = x >= 4 && x < 9 && y >= 3 && y < 8;
+      levels[y * kSide + x] = inner ? 2 : ring ? 1 : 0;
+    }
+  SparseCholesky chol;
+  chol.analyze_last(lower, 6, levels);
+  ASSERT_TRUE(chol.factorize(lower));
+  ASSERT_EQ(chol.levels(), 2);
+  for (int level : {1, 2}) {
+    const Eigen::MatrixXd s =
+        Eigen::MatrixXd(chol.schur_complement(lower, level)).selfadjointView<Eigen::Lower>();
+    const std::vector<std::int64_t> p = chol.trailing_unknowns(level);
+    std::vector<std::int64_t> e;
+    for (std::int64_t i = 0; i < lower.rows(); ++i)
+      if (levels[static_cast<std::size_t>(i / 6)] < level)
+        e.push_back(i);
+    ASSERT_EQ(p.size() + e.size(), static_cast<std::size_t>(lower.rows())) << level;
+    const Eigen::MatrixXd expected =
+        Eigen::MatrixXd(k(p, p)) -
+        k(p, e) * Eigen::MatrixXd(k(e, e)).llt().solve(Eigen::MatrixXd(k(e, p)));
+    EXPECT_LE((s - expected).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff()) << level;
+  }
+  // A patch next to blocks two levels lower is no nesting.
+  levels.assign(levels.size(), 0);
+  levels[5 * kSide + 5] = 2;
+  EXPECT_THROW(chol.analyze_last(lower, 6, levels), std::logic_error);
 }
 
 // A load on the blocks ordered last is solved forward on the trailing part of L only; the

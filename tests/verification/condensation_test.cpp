@@ -7,8 +7,9 @@
 // and once condensed onto zones as small as the candidate points allow (fraction 1, least zone
 // 1 block): the carried stage factors, the monitor's displacements and the collapse bracket must
 // agree. The condensed run must have condensed onto a part of the model and more than once (a
-// zone outgrown and replaced), or the test proves nothing. The same under displacement control,
-// whose monitor term must be read in the zone's unknowns.
+// zone outgrown and replaced), or the test proves nothing; with reserve zones in K's order, it
+// must also have replaced a zone by a reserve. The same under displacement control, whose
+// monitor term must be read in the zone's unknowns.
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
@@ -19,23 +20,32 @@ namespace bimrock {
 namespace {
 
 constexpr PlasticOptions kWhole{.condensed_zone_fraction = 0.0};
-constexpr PlasticOptions kCondensed{.condensed_zone_fraction = 1.0, .least_zone_blocks = 1};
+constexpr PlasticOptions kCondensed{
+    .condensed_zone_fraction = 1.0, .least_zone_blocks = 1, .zone_reserves = 0};
+constexpr PlasticOptions kReserves{
+    .condensed_zone_fraction = 1.0, .least_zone_blocks = 1, .zone_reserves = 2};
 
-void expect_condensed(const PlasticResult& r, int blocks) {
+void expect_condensed(const PlasticResult& r, int blocks, const PlasticOptions& opt) {
   EXPECT_GE(r.condensations, 2) << "no zone was outgrown";
+  if (opt.zone_reserves > 0)
+    EXPECT_GE(r.reserve_switches, 1) << "no reserve zone was used";
+  else
+    EXPECT_EQ(r.reserve_switches, 0);
   EXPECT_GT(r.zone_blocks, 0);
   EXPECT_LT(r.zone_blocks, blocks) << "the last zone is the whole model";
-  std::printf("%d condensations, the last onto %d of %d blocks\n", r.condensations, r.zone_blocks,
-              blocks);
+  std::printf("%d condensations, %d reserves used, the last zone %d of %d blocks\n",
+              r.condensations, r.reserve_switches, r.zone_blocks, blocks);
 }
 
 TEST(Condensation, GivesTheSameAnalysisAsTheWholeStiffness) {
   const PlasticResult whole = testing::run_abutment(kWhole);
-  const PlasticResult condensed = testing::run_abutment(kCondensed);
   EXPECT_EQ(whole.condensations, 1);
   EXPECT_EQ(whole.zone_blocks, static_cast<int>(whole.state.u.size() / 6));
-  expect_condensed(condensed, static_cast<int>(whole.state.u.size() / 6));
-  testing::expect_same_analysis(whole, condensed);
+  for (const PlasticOptions& opt : {kCondensed, kReserves}) {
+    const PlasticResult condensed = testing::run_abutment(opt);
+    expect_condensed(condensed, static_cast<int>(whole.state.u.size() / 6), opt);
+    testing::expect_same_analysis(whole, condensed);
+  }
 }
 
 TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {
@@ -51,18 +61,20 @@ TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {
       DisplacementControlSpec{c.monitors[0].name, reached.normalized(), 0.7 * reached.norm(), {}};
   const Model model = build_model(c);
   const PlasticResult whole = run_plastic_analysis(model, kWhole);
-  const PlasticResult condensed = run_plastic_analysis(model, kCondensed);
-  expect_condensed(condensed, model.n_blocks());
   ASSERT_FALSE(whole.collapse || whole.stopped);
-  ASSERT_EQ(whole.history.size(), condensed.history.size());
-  for (std::size_t i = 0; i < whole.history.size(); ++i) {
-    const IncrementRecord& a = whole.history[i];
-    const IncrementRecord& b = condensed.history[i];
-    EXPECT_NEAR(b.stage_factor, a.stage_factor, 1e-7 * std::abs(a.stage_factor)) << i;
-    EXPECT_NEAR((b.monitors[0] - a.monitors[0]).norm(), 0.0, 1e-7 * a.monitors[0].norm()) << i;
+  for (const PlasticOptions& opt : {kCondensed, kReserves}) {
+    const PlasticResult condensed = run_plastic_analysis(model, opt);
+    expect_condensed(condensed, model.n_blocks(), opt);
+    ASSERT_EQ(whole.history.size(), condensed.history.size());
+    for (std::size_t i = 0; i < whole.history.size(); ++i) {
+      const IncrementRecord& a = whole.history[i];
+      const IncrementRecord& b = condensed.history[i];
+      EXPECT_NEAR(b.stage_factor, a.stage_factor, 1e-7 * std::abs(a.stage_factor)) << i;
+      EXPECT_NEAR((b.monitors[0] - a.monitors[0]).norm(), 0.0, 1e-7 * a.monitors[0].norm()) << i;
+    }
+    EXPECT_LE((condensed.state.u - whole.state.u).cwiseAbs().maxCoeff(),
+              1e-7 * whole.state.u.cwiseAbs().maxCoeff());
   }
-  EXPECT_LE((condensed.state.u - whole.state.u).cwiseAbs().maxCoeff(),
-            1e-7 * whole.state.u.cwiseAbs().maxCoeff());
 }
 
 }  // namespace

@@ -12,14 +12,13 @@ constexpr int kBlock = 6;  // unknowns per block
 CondensedStiffness::CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower)
     : lower_(&k_lower), factor_(&k) {}
 
-CondensedStiffness::CondensedStiffness(SparseCholesky& k, const SparseMatrix& k_lower,
-                                       std::vector<char> zone)
-    : zone_(std::move(zone)), own_factor_(std::make_unique<SparseCholesky>()) {
-  k.analyze_last(k_lower, kBlock, zone_);
-  if (!k.factorize(k_lower))
-    throw std::logic_error("CondensedStiffness: K, positive definite before, is not now");
-  own_lower_ = k.schur_complement(k_lower);
-  const std::vector<std::int64_t>& unknowns = k.trailing_unknowns();
+CondensedStiffness::CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower,
+                                       const std::vector<char>& levels, int level)
+    : zone_(levels.size(), 0), own_factor_(std::make_unique<SparseCholesky>()) {
+  for (std::size_t b = 0; b < levels.size(); ++b)
+    zone_[b] = levels[b] >= level ? 1 : 0;
+  own_lower_ = k.schur_complement(k_lower, level);
+  const std::vector<std::int64_t> unknowns = k.trailing_unknowns(level);
   std::vector<Eigen::Triplet<double, std::int64_t>> ones;
   ones.reserve(unknowns.size());
   for (std::size_t j = 0; j < unknowns.size(); ++j)

@@ -24,9 +24,10 @@ class CondensedStiffness {
  public:
   /// No condensation: S is K and its factor K's.
   CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower);
-  /// K condensed onto the blocks flagged in `zone`: `k` is analyzed anew with them ordered last
-  /// and factorized (the same K, another order), then S formed and factorized.
-  CondensedStiffness(SparseCholesky& k, const SparseMatrix& k_lower, std::vector<char> zone);
+  /// K condensed onto the zone of blocks of level >= `level`: `k` is K's factor in the order of
+  /// `levels` (SparseCholesky::analyze_last), S is read from it and factorized.
+  CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower,
+                     const std::vector<char>& levels, int level);
 
   CondensedStiffness(const CondensedStiffness&) = delete;
   CondensedStiffness& operator=(const CondensedStiffness&) = delete;

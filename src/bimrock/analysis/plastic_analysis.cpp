@@ -43,11 +43,17 @@ constexpr double kAimAtBound = 0.9;
 
 /// The zone K is condensed onto: rings of neighbours around the blocks of the required
 /// candidate points, to kZoneGrowth times their number and kZoneRegrowth times the last zone
-/// (at least PlasticOptions::least_zone_blocks). Each new zone costs a factorization of K in a
-/// new order (~0.45 s at 10^4 blocks), a larger zone costs more in every active-set iteration:
-/// measured on the plastic model of `bimrock bench` (docs/performance.md, session 12).
+/// condensed onto first (at least PlasticOptions::least_zone_blocks). Each new zone costs a
+/// factorization of K in a new order (~0.45 s at 10^4 blocks), a larger zone costs more in
+/// every active-set iteration: measured on the plastic model of `bimrock bench`
+/// (docs/performance.md, session 12). K's order also holds PlasticOptions::zone_reserves
+/// reserve zones, each kReserveGrowth times the one inside it: a zone outgrown is replaced by
+/// the smallest reserve that holds what is needed, read from the same factor (session 13:
+/// 5% less time at 10^5 blocks, 2% at 10^4; more reserves or finer ones made K's factor
+/// larger for no gain).
 constexpr double kZoneGrowth = 1.5;
 constexpr double kZoneRegrowth = 1.2;
+constexpr double kReserveGrowth = 1.25;
 
 // The LCP solvers and what they keep from one increment to the next.
 struct LcpSolvers {
@@ -55,6 +61,8 @@ struct LcpSolvers {
       : k(k_factor), k_lower(k_matrix) {}
   SparseCholesky& k;  // K's factor: reordered when the condensation's zone changes
   const SparseMatrix& k_lower;
+  std::vector<char> levels;  // per block: the nested zones of k's order (empty: K's own order)
+  int level = 0;             // the zone condensed onto: blocks of levels >= level
   std::unique_ptr<CondensedStiffness> condensed;  // S: the LCP's stiffness (or K itself)
   ActiveSetLcp active_set;
   Lemke lemke;
@@ -64,25 +72,87 @@ struct LcpSolvers {
   CholeskyWork retired_tangent;               // the work of tangents of earlier condensations
   CholeskyWork retired_s;                     // and of their S's factors
   int condensations = 0;
+  int reserve_switches = 0;
+  int last_zone = 0;  // blocks of the last zone condensed onto first (not of its reserves)
 
   // Condenses K onto a zone that holds the blocks flagged in `needed`, unless the one it has
-  // does. What was kept in S's unknowns goes.
+  // does: onto a reserve zone of K's factor if one holds them, else onto a new zone (K
+  // factorized in a new order). What was kept in S's unknowns goes.
   void condense(const Model& model, const std::vector<char>& needed, const PlasticOptions& opt) {
-    if (condensed) {
-      bool covered = true;
-      for (std::size_t b = 0; b < needed.size() && covered; ++b)
-        covered = !needed[b] || condensed->covers(static_cast<int>(b));
-      if (covered)
+    if (condensed && holds(needed, condensed->whole() ? 0 : level))
+      return;
+    for (int l = level - 1; l >= 1 && !levels.empty(); --l)
+      if (holds(needed, l)) {
+        retire();
+        use(l);
+        ++reserve_switches;
+        report("reserve", needed);
         return;
-    }
+      }
     // A margin around what is needed now, and more blocks than the last zone: a zone outgrown
     // once is outgrown again as the plastic zone spreads.
     const auto count = static_cast<int>(std::count(needed.begin(), needed.end(), 1));
-    const int last = condensed ? condensed->zone_blocks() : 0;
-    const std::vector<char> zone =
+    const int last = last_zone;
+    std::vector<char> zone =
         grow_zone(model, needed,
                   std::max({opt.least_zone_blocks, static_cast<int>(kZoneGrowth * count),
                             static_cast<int>(kZoneRegrowth * last)}));
+    retire();
+    last_zone = static_cast<int>(std::count(zone.begin(), zone.end(), 1));
+    const double most = opt.condensed_zone_fraction * model.n_blocks();
+    auto size = [](const std::vector<char>& z) {
+      return static_cast<double>(std::count(z.begin(), z.end(), 1));
+    };
+    if (size(zone) > most) {
+      whole();
+    } else {
+      // The zone, then its reserves around it (while they are within the fraction): levels
+      // counted from the outermost reserve, 1.
+      std::vector<std::vector<char>> zones{zone};
+      for (int r = 0; r < opt.zone_reserves; ++r) {
+        std::vector<char> outer =
+            grow_zone(model, zones.back(), static_cast<int>(kReserveGrowth * size(zones.back())));
+        if (size(outer) > most || size(outer) == size(zones.back()))
+          break;
+        zones.push_back(std::move(outer));
+      }
+      levels.assign(needed.size(), 0);
+      for (const std::vector<char>& z : zones)
+        for (std::size_t b = 0; b < z.size(); ++b)
+          levels[b] = static_cast<char>(levels[b] + z[b]);
+      k.analyze_last(k_lower, 6, levels);
+      if (!k.factorize(k_lower))
+        throw std::logic_error("condense: K, positive definite before, is not now");
+      use(static_cast<int>(zones.size()));
+    }
+    ++condensations;
+    if (!condensed->factorized())  // round-off in a nearly singular K: K itself, from now on
+      whole();
+    report("condensation", needed);
+  }
+  // Whether the zone `l` (0: the whole model) holds every flagged block.
+  [[nodiscard]] bool holds(const std::vector<char>& needed, int l) const {
+    if (l == 0)
+      return true;
+    for (std::size_t b = 0; b < needed.size(); ++b)
+      if (needed[b] && levels[b] < l)
+        return false;
+    return true;
+  }
+  // Condenses onto zone l of K's factor as it is.
+  void use(int l) {
+    level = l;
+    condensed = std::make_unique<CondensedStiffness>(k, k_lower, levels, l);
+    emplace_solvers();
+  }
+  void whole() {
+    level = 0;
+    levels.clear();
+    condensed = std::make_unique<CondensedStiffness>(k, k_lower);
+    emplace_solvers();
+  }
+  // The work of the solvers that go, for the totals.
+  void retire() {
     if (tangent)
       add(retired_tangent, tangent->cholesky.work());
     if (condensed && !condensed->whole())
@@ -90,24 +160,24 @@ struct LcpSolvers {
     columns.reset();
     tangent.reset();
     condensed.reset();
-    if (static_cast<double>(std::count(zone.begin(), zone.end(), 1)) >
-        opt.condensed_zone_fraction * model.n_blocks())
-      condensed = std::make_unique<CondensedStiffness>(k, k_lower);
-    else
-      condensed = std::make_unique<CondensedStiffness>(k, k_lower, zone);
-    if (!condensed->factorized())  // round-off in a nearly singular K: K itself, from now on
-      condensed = std::make_unique<CondensedStiffness>(k, k_lower);
-    ++condensations;
-    if (std::getenv("BIMROCK_DEBUG_LCP"))
-      std::fprintf(stderr, "condensation %d: %d blocks needed, zone of %d\n", condensations,
-                   static_cast<int>(std::count(needed.begin(), needed.end(), 1)),
-                   condensed->zone_blocks());
+  }
+  void emplace_solvers() {
     // The columns kept may take 12 bytes per entry of S's factor, 1.5 times its values: they
     // set the peak of the dense route's increments (a third of it cost 2.5x the columns' time
     // at 10^4 blocks for 10% less peak; docs/performance.md, sessions 10 and 11).
     const SparseCholesky& s = condensed->factor();
     columns.emplace(s, std::max<std::int64_t>(64 << 20, 12 * s.factor_nonzeros()));
     tangent.emplace();
+  }
+  void report(const char* what, const std::vector<char>& needed) const {
+    if (std::getenv("BIMROCK_DEBUG_LCP"))
+      std::fprintf(stderr,
+                   "%s %d (+%d reserves): %d blocks needed, zone of %d (level %d of %d), "
+                   "%lld entries in K's factor\n",
+                   what, condensations, reserve_switches,
+                   static_cast<int>(std::count(needed.begin(), needed.end(), 1)),
+                   condensed->zone_blocks(), level, k.levels(),
+                   static_cast<long long>(k.factor_nonzeros()));
   }
   static void add(CholeskyWork& total, const CholeskyWork& w) {
     total.factorizations += w.factorizations;
@@ -623,6 +693,7 @@ PlasticResult with_solver_work(PlasticResult result, const SparseCholesky& k,
   result.timings.add("(solves with K)", k.work().solve_seconds);
   result.timings.add("(solves with S, K condensed)", s.solve_seconds);
   result.condensations = solvers.condensations;
+  result.reserve_switches = solvers.reserve_switches;
   result.zone_blocks = solvers.condensed ? solvers.condensed->zone_blocks() : 0;
   return result;
 }

@@ -50,6 +50,10 @@ struct PlasticOptions {
   /// condense, 1: always). The zone has at least least_zone_blocks blocks.
   double condensed_zone_fraction = 0.5;
   int least_zone_blocks = 200;
+  /// K's order for a zone also makes room for this many reserve zones around it (nested, each
+  /// rings of blocks larger): a zone outgrown is replaced by a reserve that holds what is
+  /// needed without factorizing K again (0: none).
+  int zone_reserves = 2;
   /// Record each phase's peak resident memory in the timings (benchmarks).
   bool track_memory = false;
 };
@@ -109,8 +113,10 @@ struct PlasticResult {
   std::optional<Stop> stopped;
   Timings timings;
   /// Times K was condensed onto a zone (factorized again in another order; the last may be
-  /// "no condensation") and the blocks of the last zone (docs/formulation.md).
+  /// "no condensation"), times a zone outgrown was replaced by a reserve zone of the same
+  /// factor, and the blocks of the last zone (docs/formulation.md).
   int condensations = 0;
+  int reserve_switches = 0;
   int zone_blocks = 0;
 };
 

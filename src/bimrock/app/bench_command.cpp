@@ -48,8 +48,9 @@ struct Run {
   double run_peak_bytes = 0.0;  ///< whole analysis, results not written
   int blocks = 0, interfaces = 0, unknowns = 0, yield_points = 0, lcp_rows_max = 0, increments = 0;
   bool collapsed = false;
-  int condensations = 0;  ///< times K was condensed onto a plastic zone
-  int zone_blocks = 0;    ///< blocks of the last zone
+  int condensations = 0;     ///< times K was condensed onto a plastic zone
+  int reserve_switches = 0;  ///< times a zone was replaced by a reserve of the same factor
+  int zone_blocks = 0;       ///< blocks of the last zone
 };
 
 void add(Run& run, const std::string& phase, double s, double peak = -1) {
@@ -189,6 +190,7 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
     run.lcp_rows_max = std::max(run.lcp_rows_max, h.lcp_size);
   run.collapsed = result.collapse.has_value();
   run.condensations = result.condensations;
+  run.reserve_switches = result.reserve_switches;
   run.zone_blocks = result.zone_blocks;
   measure_limit(model, run);
   return run;
@@ -243,10 +245,11 @@ void print_row(const Row& r) {
              r.first.interfaces, r.first.unknowns);
   if (r.model == "plastic")
     fmt::print(
-        ", {} yield points, {} increments, largest LCP {} rows{}, K condensed {} times (last "
-        "zone {} blocks)",
+        ", {} yield points, {} increments, largest LCP {} rows{}, K condensed {} times, a "
+        "reserve zone used {} times (last zone {} blocks)",
         r.first.yield_points, r.first.increments, r.first.lcp_rows_max,
-        r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.zone_blocks);
+        r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.reserve_switches,
+        r.first.zone_blocks);
   fmt::print("\n  {:<34} {:>10} {:>10}\n", "phase", "median s", "RSS peak");
   for (const auto& [phase, s] : r.median_seconds) {
     const auto peak = r.peak_bytes.find(phase);
@@ -281,6 +284,7 @@ nlohmann::json to_json(const Row& r) {
           {"lcp_rows_max", r.first.lcp_rows_max},
           {"collapsed", r.first.collapsed},
           {"condensations", r.first.condensations},
+          {"reserve_switches", r.first.reserve_switches},
           {"zone_blocks", r.first.zone_blocks},
           {"phases", phases},
           {"whole_seconds", r.total},

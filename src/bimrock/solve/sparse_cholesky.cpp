@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <stdexcept>
 #include <vector>
 
@@ -159,8 +160,9 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
     throw std::logic_error("SparseCholesky: matrix must be compressed");
   if (impl_->factor)
     cholmod_l_free_factor(&impl_->factor, &impl_->common);
-  trailing_.clear();
-  coupled_.clear();
+  order_.clear();
+  level_start_.clear();
+  boundary_start_.clear();
   cholmod_common& cm = impl_->common;
   if (block_size > 1 && lower.rows() % block_size == 0 && lower.rows() > block_size) {
     // Order the block graph with CHOLMOD's default strategy, expand the permutation to the
@@ -181,89 +183,111 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
 }
 
 void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
-                                  const std::vector<char>& last) {
+                                  const std::vector<char>& level) {
   if (!lower.isCompressed())
     throw std::logic_error("SparseCholesky: matrix must be compressed");
   if (block_size < 1 || lower.rows() % block_size != 0 ||
-      static_cast<std::int64_t>(last.size()) != lower.rows() / block_size)
-    throw std::logic_error("SparseCholesky::analyze_last: one flag per block");
+      static_cast<std::int64_t>(level.size()) != lower.rows() / block_size)
+    throw std::logic_error("SparseCholesky::analyze_last: one level per block");
   if (impl_->factor)
     cholmod_l_free_factor(&impl_->factor, &impl_->common);
   cholmod_common& cm = impl_->common;
   const CholmodMatrix pattern = block_pattern(lower, block_size);
   const std::int64_t nb = pattern.rows();
-  std::vector<char> coupled(static_cast<std::size_t>(nb), 0);  // flagged, next to unflagged
+  const int top = nb > 0 ? *std::max_element(level.begin(), level.end()) : 0;
+  std::vector<char> coupled(static_cast<std::size_t>(nb), 0);  // next to a lower level
   for (std::int64_t c = 0; c < nb; ++c)
-    for (CholmodMatrix::InnerIterator it(pattern, c); it; ++it)
-      if (last[static_cast<std::size_t>(c)] != last[static_cast<std::size_t>(it.row())]) {
-        coupled[static_cast<std::size_t>(last[static_cast<std::size_t>(c)] ? c : it.row())] = 1;
-      }
-  // Three groups, each ordered on its own graph (ascending first: see induced_pattern).
-  std::vector<std::int64_t> groups[3];
+    for (CholmodMatrix::InnerIterator it(pattern, c); it; ++it) {
+      const char a = level[static_cast<std::size_t>(c)];
+      const char b = level[static_cast<std::size_t>(it.row())];
+      if (a == b)
+        continue;
+      if (std::abs(a - b) > 1)
+        throw std::logic_error("SparseCholesky::analyze_last: zones that do not nest");
+      coupled[static_cast<std::size_t>(a > b ? c : it.row())] = 1;
+    }
+  // Groups: level 0; then per level its blocks coupled to no lower one, then those coupled to
+  // one. Each ordered on its own graph (ascending first: see induced_pattern).
+  std::vector<std::vector<std::int64_t>> groups(static_cast<std::size_t>(2 * top + 1));
   for (std::int64_t b = 0; b < nb; ++b) {
     const auto i = static_cast<std::size_t>(b);
-    groups[!last[i] ? 0 : coupled[i] ? 2 : 1].push_back(b);
+    const int l = level[i];
+    if (l < 0)
+      throw std::logic_error("SparseCholesky::analyze_last: a negative level");
+    groups[l == 0 ? 0 : static_cast<std::size_t>(2 * l - 1 + coupled[i])].push_back(b);
   }
   std::vector<std::int64_t> coarse;
-  for (const std::vector<std::int64_t>& g : groups) {
-    if (g.empty())
+  level_start_.assign(static_cast<std::size_t>(top + 1), 0);
+  boundary_start_.assign(static_cast<std::size_t>(top + 1), 0);
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const auto position = static_cast<std::int64_t>(block_size * coarse.size());
+    if (g > 0 && g % 2 == 1)
+      level_start_[(g + 1) / 2] = position;
+    else if (g > 0)
+      boundary_start_[g / 2] = position;
+    if (groups[g].empty())
       continue;
-    const std::vector<std::int64_t> order = g.size() > 1
-                                                ? default_ordering(induced_pattern(pattern, g), cm)
-                                                : std::vector<std::int64_t>{0};
+    const std::vector<std::int64_t> order =
+        groups[g].size() > 1 ? default_ordering(induced_pattern(pattern, groups[g]), cm)
+                             : std::vector<std::int64_t>{0};
     for (std::int64_t k : order)
-      coarse.push_back(g[static_cast<std::size_t>(k)]);
+      coarse.push_back(groups[g][static_cast<std::size_t>(k)]);
   }
-  const std::vector<std::int64_t> perm = expand_blocks(coarse, block_size);
-  analyze_given(lower, perm.data(), true);
+  order_ = expand_blocks(coarse, block_size);
+  analyze_given(lower, order_.data(), true);
   if (!impl_->factor)
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
-  const std::size_t first = block_size * groups[0].size();
-  trailing_.assign(perm.begin() + static_cast<std::ptrdiff_t>(first), perm.end());
-  coupled_.assign(trailing_.size(), 0);
-  for (std::size_t k = 0; k < trailing_.size(); ++k)
-    coupled_[k] = coupled[static_cast<std::size_t>(trailing_[k] / block_size)];
   n_ = lower.rows();
   analyzed_nonzeros_ = lower.nonZeros();
   factor_flops_ = cm.fl;
   factorized_ = false;
 }
 
-CholmodMatrix SparseCholesky::schur_complement(const CholmodMatrix& lower) const {
+std::vector<std::int64_t> SparseCholesky::trailing_unknowns(int level) const {
+  if (level < 1 || level > levels())
+    return {};
+  return {order_.begin() + level_start_[static_cast<std::size_t>(level)], order_.end()};
+}
+
+CholmodMatrix SparseCholesky::schur_complement(const CholmodMatrix& lower, int level) const {
   const cholmod_factor* f = impl_->factor;
-  if (!factorized_ || trailing_.empty() || !f->is_super)
+  if (!factorized_ || level < 1 || level > levels() || !f->is_super)
     throw std::logic_error("SparseCholesky::schur_complement before analyze_last and factorize");
-  const auto np = static_cast<std::int64_t>(trailing_.size());
-  const std::int64_t first = n_ - np;  // of the trailing columns, in the factor's order
-  std::int64_t nb = 0;                 // trailing unknowns coupled to leading ones: the last
-  while (nb < np && coupled_[static_cast<std::size_t>(np - 1 - nb)])
-    ++nb;
-  const std::int64_t first_coupled = n_ - nb;
-  // S = K_PP - K_PE K_EE^-1 K_EP differs from K_PP only where both unknowns are coupled to E
-  // (the set B, ordered last), and there S = L_B L_B^T over the rows B of L's trailing
-  // columns (L_PP L_PP^T = S): a sum over the supernodes of G G^T, G the dense rows of B of
-  // each (a supernode's rows ascend, so they are its last rows).
+  const auto l = static_cast<std::size_t>(level);
+  const std::int64_t first = level_start_[l];  // of the zone's columns, in the factor's order
+  const std::int64_t np = n_ - first;
+  // Its unknowns coupled to lower levels: the set B, at the end of the level's own.
+  const std::int64_t b0 = boundary_start_[l];
+  const std::int64_t b1 = l + 1 < level_start_.size() ? level_start_[l + 1] : n_;
+  const std::int64_t nb = b1 - b0;
+  // S = K_PP - K_PE K_EE^-1 K_EP differs from K_PP only where both unknowns are in B, and there
+  // S = L_B L_B^T over the rows B of L's columns in P (L_PP L_PP^T = S): a sum over the
+  // supernodes of G G^T, G the dense rows of B of each (a supernode's rows ascend). Columns
+  // after B have no row in B.
   Eigen::MatrixXd s_bb = Eigen::MatrixXd::Zero(nb, nb);
   const auto* super = static_cast<const std::int64_t*>(f->super);
   const auto* pi = static_cast<const std::int64_t*>(f->pi);
   const auto* px = static_cast<const std::int64_t*>(f->px);
   const auto* ls = static_cast<const std::int64_t*>(f->s);
   const auto* lx = static_cast<const double*>(f->x);
-  for (std::size_t sn = 0; sn < f->nsuper; ++sn) {
+  for (std::size_t sn = 0; sn < f->nsuper && nb > 0; ++sn) {
     const std::int64_t k1 = super[sn];
-    const std::int64_t k2 = super[sn + 1];
-    if (k2 <= first || nb == 0)
+    const std::int64_t k2 = std::min(super[sn + 1], b1);
+    if (k2 <= first)
       continue;
+    if (k1 >= b1)
+      break;
     const std::int64_t j0 = std::max(k1, first);
     const std::int64_t nrow = pi[sn + 1] - pi[sn];
     const std::int64_t* rows = ls + pi[sn];
     if (!std::is_sorted(rows, rows + nrow))
       throw std::logic_error("SparseCholesky::schur_complement: unsorted supernode");
-    const std::int64_t i0 = std::lower_bound(rows, rows + nrow, first_coupled) - rows;
-    if (i0 == nrow)
+    const std::int64_t i0 = std::lower_bound(rows, rows + nrow, b0) - rows;
+    const std::int64_t i1 = std::lower_bound(rows, rows + nrow, b1) - rows;
+    if (i0 == i1)
       continue;
     const Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> block(
-        lx + px[sn] + (j0 - k1) * nrow + i0, nrow - i0, k2 - j0, Eigen::OuterStride<>(nrow));
+        lx + px[sn] + (j0 - k1) * nrow + i0, i1 - i0, k2 - j0, Eigen::OuterStride<>(nrow));
     Eigen::MatrixXd g = block;
     for (Eigen::Index c = 0; c < g.cols(); ++c)  // the diagonal block's upper part is not L's
       for (Eigen::Index r = 0; r < g.rows() && rows[i0 + r] < j0 + c; ++r)
@@ -272,28 +296,28 @@ CholmodMatrix SparseCholesky::schur_complement(const CholmodMatrix& lower) const
     h.selfadjointView<Eigen::Lower>().rankUpdate(g);
     for (Eigen::Index c = 0; c < h.cols(); ++c)
       for (Eigen::Index r = c; r < h.rows(); ++r)
-        s_bb(rows[i0 + r] - first_coupled, rows[i0 + c] - first_coupled) += h(r, c);
+        s_bb(rows[i0 + r] - b0, rows[i0 + c] - b0) += h(r, c);
   }
   // K_PP elsewhere, read from K in the trailing order.
   std::vector<std::int64_t> local(static_cast<std::size_t>(n_), -1);
   for (std::int64_t k = 0; k < np; ++k)
-    local[static_cast<std::size_t>(trailing_[static_cast<std::size_t>(k)])] = k;
+    local[static_cast<std::size_t>(order_[static_cast<std::size_t>(first + k)])] = k;
+  const std::int64_t lb0 = b0 - first;  // B in S's numbering
+  const std::int64_t lb1 = b1 - first;
+  const auto in_b = [&](std::int64_t k) { return k >= lb0 && k < lb1; };
   std::vector<Eigen::Triplet<double, std::int64_t>> entries;
   for (std::int64_t k = 0; k < np; ++k) {
-    const std::int64_t c = trailing_[static_cast<std::size_t>(k)];
+    const std::int64_t c = order_[static_cast<std::size_t>(first + k)];
     for (CholmodMatrix::InnerIterator it(lower, c); it; ++it) {
       const std::int64_t r = local[static_cast<std::size_t>(it.row())];
-      if (r < 0)
+      if (r < 0 || (in_b(r) && in_b(k)))
         continue;
-      const std::int64_t hi = std::max(r, k);
-      const std::int64_t lo = std::min(r, k);
-      if (lo < np - nb)
-        entries.emplace_back(hi, lo, it.value());
+      entries.emplace_back(std::max(r, k), std::min(r, k), it.value());
     }
   }
   for (std::int64_t c = 0; c < nb; ++c)
     for (std::int64_t r = c; r < nb; ++r)
-      entries.emplace_back(np - nb + r, np - nb + c, s_bb(r, c));
+      entries.emplace_back(lb0 + r, lb0 + c, s_bb(r, c));
   CholmodMatrix s(np, np);
   s.setFromTriplets(entries.begin(), entries.end());
   s.makeCompressed();
@@ -366,31 +390,28 @@ Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const {
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
-  if (factorized_ && !trailing_.empty() && impl_->factor->is_super) {
+  if (factorized_ && impl_->factor->is_super) {
     const auto* perm = static_cast<const std::int64_t*>(impl_->factor->Perm);
-    const auto first = n_ - static_cast<std::int64_t>(trailing_.size());
-    bool leading_zero = true;
-    for (std::int64_t k = 0; k < first && leading_zero; ++k)
-      leading_zero = b(perm[k]) == 0.0;
-    if (leading_zero)
-      return solve_from_trailing(b);
+    std::int64_t first = 0;
+    while (first < n_ && b(perm ? perm[first] : first) == 0.0)
+      ++first;
+    if (first >= n_ / 4)
+      return solve_from(b, first);
   }
   Eigen::MatrixXd m = b;
   return solve(m).col(0);
 }
 
-Eigen::VectorXd SparseCholesky::solve_from_trailing(const Eigen::VectorXd& b) const {
+Eigen::VectorXd SparseCholesky::solve_from(const Eigen::VectorXd& b, std::int64_t first) const {
   const cholmod_factor* f = impl_->factor;
   const auto start = std::chrono::steady_clock::now();
   const auto* perm = static_cast<const std::int64_t*>(f->Perm);
-  const auto first = n_ - static_cast<std::int64_t>(trailing_.size());
-  // L y = P b, supernode by supernode from the first that holds a trailing column: before it,
-  // y = 0. A supernode that starts among the leading columns is solved from `first` on (its
-  // leading columns' y are 0 too).
+  // L y = P b, supernode by supernode from the one that holds column `first`: before it, y = 0.
+  // That supernode is solved from `first` on (its earlier columns' y are 0 too).
   Eigen::MatrixXd rhs_y(n_, 1);  // CHOLMOD's dense view wants a matrix
   auto y = rhs_y.col(0);
   for (std::int64_t k = 0; k < n_; ++k)
-    y(k) = b(perm[k]);
+    y(k) = b(perm ? perm[k] : k);
   const auto* super = static_cast<const std::int64_t*>(f->super);
   const auto* pi = static_cast<const std::int64_t*>(f->pi);
   const auto* px = static_cast<const std::int64_t*>(f->px);
@@ -423,7 +444,7 @@ Eigen::VectorXd SparseCholesky::solve_from_trailing(const Eigen::VectorXd& b) co
   const auto* values = static_cast<const double*>(xp->x);
   Eigen::VectorXd x(n_);
   for (std::int64_t k = 0; k < n_; ++k)
-    x(perm[k]) = values[k];
+    x(perm ? perm[k] : k) = values[k];
   cholmod_l_free_dense(&xp, &impl_->common);
   ++work_.solved_columns;
   work_.solve_seconds += seconds_since(start);

@@ -34,19 +34,24 @@ class SparseCholesky {
   /// entries to order for the same permutation quality.
   void analyze(const CholmodMatrix& lower, int block_size = 1);
 
-  /// Symbolic analysis that orders the blocks flagged in `last` (one flag per block of
-  /// block_size unknowns) after all the others, so that their Schur complement is the trailing
-  /// part of the factor (schur_complement()). The others are ordered as analyze() orders a whole
-  /// matrix; the flagged ones coupled to no other come first among them, those coupled to one
-  /// at the very end (the Schur complement is dense on them). The factor is supernodal.
-  void analyze_last(const CholmodMatrix& lower, int block_size, const std::vector<char>& last);
+  /// Symbolic analysis that orders the blocks by `level` (one per block of block_size unknowns:
+  /// level 0 first, the highest last), so that for every l >= 1 the Schur complement onto the
+  /// blocks of level >= l (the zone l) is the trailing part of the factor (schur_complement()).
+  /// Level 0 is ordered as analyze() orders a whole matrix. Within a level l >= 1, its blocks
+  /// coupled to none of a lower level come first, those coupled to one (the zone l's boundary,
+  /// on which its Schur complement is dense) at its end. The zones must nest: a block coupled to
+  /// one two levels lower or more is a std::logic_error. The factor is supernodal.
+  void analyze_last(const CholmodMatrix& lower, int block_size, const std::vector<char>& level);
 
-  /// After analyze_last() and a successful factorize(): with P the flagged unknowns and E the
-  /// others, S = K_PP - K_PE K_EE^-1 K_EP = L_PP L_PP^T (lower triangle), its rows and columns in
-  /// the order of trailing_unknowns() (each block's unknowns together, as in K).
-  [[nodiscard]] CholmodMatrix schur_complement(const CholmodMatrix& lower) const;
-  /// The unknowns of K in the order of schur_complement()'s rows (empty unless analyze_last()).
-  [[nodiscard]] const std::vector<std::int64_t>& trailing_unknowns() const { return trailing_; }
+  /// After analyze_last() and a successful factorize(): with P the unknowns of zone `level` and
+  /// E the others, S = K_PP - K_PE K_EE^-1 K_EP = L_PP L_PP^T (lower triangle), its rows and
+  /// columns in the order of trailing_unknowns(level) (each block's unknowns together, as in K).
+  [[nodiscard]] CholmodMatrix schur_complement(const CholmodMatrix& lower, int level = 1) const;
+  /// The unknowns of zone `level` in the order of schur_complement()'s rows (empty unless
+  /// analyze_last() gave blocks that level).
+  [[nodiscard]] std::vector<std::int64_t> trailing_unknowns(int level = 1) const;
+  /// The highest level of analyze_last() (0 after analyze()).
+  [[nodiscard]] int levels() const { return static_cast<int>(level_start_.size()) - 1; }
 
   /// Numeric factorization; false when the matrix is not positive definite, in which case
   /// failed_column() names the original column where the factorization broke down.
@@ -66,9 +71,10 @@ class SparseCholesky {
   /// before analyze). A solve costs about 4 factor_nonzeros() per right-hand side.
   [[nodiscard]] double factor_flops() const { return factor_flops_; }
 
-  /// x = K^-1 b for one or several right-hand sides. After analyze_last(), a b that is zero
-  /// outside the flagged blocks (a load on the zone) is solved forward on the trailing part of
-  /// L only (L y = b leaves y = 0 on the leading unknowns): about half the work of a solve.
+  /// x = K^-1 b for one or several right-hand sides. A single b whose entries are zero on the
+  /// first quarter or more of the factor's order (after analyze_last(), a load on a zone) is
+  /// solved forward from its first non-zero only (L y = b leaves y = 0 before it): up to half
+  /// the work of a solve.
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
 
@@ -79,13 +85,17 @@ class SparseCholesky {
   /// Symbolic analysis with the given fill-reducing permutation; `exact`: kept exactly as
   /// given (not postordered) and the factor supernodal, as schur_complement() needs.
   void analyze_given(const CholmodMatrix& lower, const std::int64_t* perm, bool exact);
-  /// solve(b) for a b that is zero on the leading unknowns of analyze_last()'s order.
-  [[nodiscard]] Eigen::VectorXd solve_from_trailing(const Eigen::VectorXd& b) const;
+  /// solve(b) for a b whose first `first` entries in the factor's order are zero.
+  [[nodiscard]] Eigen::VectorXd solve_from(const Eigen::VectorXd& b, std::int64_t first) const;
 
   std::unique_ptr<Impl> impl_;
   std::int64_t n_ = 0;
-  std::vector<std::int64_t> trailing_;
-  std::vector<char> coupled_;  // per trailing unknown: its block is coupled to a leading one
+  std::vector<std::int64_t> order_;  // after analyze_last(): the unknowns in the factor's order
+  // Per level l >= 1 of analyze_last(), in the factor's order: where its blocks start, and where
+  // those coupled to a lower level start (they end where the next level starts); level 0 starts
+  // at 0. Empty after analyze().
+  std::vector<std::int64_t> level_start_;
+  std::vector<std::int64_t> boundary_start_;
   std::int64_t analyzed_nonzeros_ = 0;
   std::int64_t failed_column_ = -1;
   double factor_flops_ = 0.0;
