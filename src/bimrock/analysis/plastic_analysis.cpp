@@ -79,7 +79,7 @@ struct LcpSolvers {
   // does: onto a reserve zone of K's factor if one holds them, else onto a new zone (K
   // factorized in a new order). What was kept in S's unknowns goes.
   void condense(const Model& model, const std::vector<char>& needed, const PlasticOptions& opt) {
-    if (condensed && holds(needed, condensed->whole() ? 0 : level))
+    if (condensed && holds(needed, level))  // level 0: K itself holds every block
       return;
     for (int l = level - 1; l >= 1 && !levels.empty(); --l)
       if (holds(needed, l)) {
@@ -91,18 +91,16 @@ struct LcpSolvers {
       }
     // A margin around what is needed now, and more blocks than the last zone: a zone outgrown
     // once is outgrown again as the plastic zone spreads.
-    const auto count = static_cast<int>(std::count(needed.begin(), needed.end(), 1));
-    const int last = last_zone;
+    auto size = [](const std::vector<char>& z) {
+      return static_cast<int>(std::count(z.begin(), z.end(), 1));
+    };
     std::vector<char> zone =
         grow_zone(model, needed,
-                  std::max({opt.least_zone_blocks, static_cast<int>(kZoneGrowth * count),
-                            static_cast<int>(kZoneRegrowth * last)}));
+                  std::max({opt.least_zone_blocks, static_cast<int>(kZoneGrowth * size(needed)),
+                            static_cast<int>(kZoneRegrowth * last_zone)}));
     retire();
-    last_zone = static_cast<int>(std::count(zone.begin(), zone.end(), 1));
+    last_zone = size(zone);
     const double most = opt.condensed_zone_fraction * model.n_blocks();
-    auto size = [](const std::vector<char>& z) {
-      return static_cast<double>(std::count(z.begin(), z.end(), 1));
-    };
     if (size(zone) > most) {
       whole();
     } else {

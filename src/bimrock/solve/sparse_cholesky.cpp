@@ -155,6 +155,15 @@ void SparseCholesky::analyze_given(const CholmodMatrix& lower, const std::int64_
   cm.postorder = saved_postorder;
 }
 
+void SparseCholesky::finish_analysis(const CholmodMatrix& lower) {
+  if (!impl_->factor)
+    throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  n_ = lower.rows();
+  analyzed_nonzeros_ = lower.nonZeros();
+  factor_flops_ = impl_->common.fl;
+  factorized_ = false;
+}
+
 void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
   if (!lower.isCompressed())
     throw std::logic_error("SparseCholesky: matrix must be compressed");
@@ -174,12 +183,7 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
     cholmod_sparse a = view(lower);
     impl_->factor = cholmod_l_analyze(&a, &cm);
   }
-  if (!impl_->factor)
-    throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
-  n_ = lower.rows();
-  analyzed_nonzeros_ = lower.nonZeros();
-  factor_flops_ = cm.fl;
-  factorized_ = false;
+  finish_analysis(lower);
 }
 
 void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
@@ -235,12 +239,7 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
   }
   order_ = expand_blocks(coarse, block_size);
   analyze_given(lower, order_.data(), true);
-  if (!impl_->factor)
-    throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
-  n_ = lower.rows();
-  analyzed_nonzeros_ = lower.nonZeros();
-  factor_flops_ = cm.fl;
-  factorized_ = false;
+  finish_analysis(lower);
 }
 
 std::vector<std::int64_t> SparseCholesky::trailing_unknowns(int level) const {

@@ -85,6 +85,8 @@ class SparseCholesky {
   /// Symbolic analysis with the given fill-reducing permutation; `exact`: kept exactly as
   /// given (not postordered) and the factor supernodal, as schur_complement() needs.
   void analyze_given(const CholmodMatrix& lower, const std::int64_t* perm, bool exact);
+  /// What every analysis ends with: the factor checked, its size and flops recorded.
+  void finish_analysis(const CholmodMatrix& lower);
   /// solve(b) for a b whose first `first` entries in the factor's order are zero.
   [[nodiscard]] Eigen::VectorXd solve_from(const Eigen::VectorXd& b, std::int64_t first) const;
 
