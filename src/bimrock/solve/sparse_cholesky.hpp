@@ -37,10 +37,12 @@ class SparseCholesky {
   /// Symbolic analysis that orders the blocks by `level` (one per block of block_size unknowns:
   /// level 0 first, the highest last), so that for every l >= 1 the Schur complement onto the
   /// blocks of level >= l (the zone l) is the trailing part of the factor (schur_complement()).
-  /// Level 0 is ordered as analyze() orders a whole matrix. Within a level l >= 1, its blocks
-  /// coupled to none of a lower level come first, those coupled to one (the zone l's boundary,
-  /// on which its Schur complement is dense) at its end. The zones must nest: a block coupled to
-  /// one two levels lower or more is a std::logic_error. The factor is supernodal.
+  /// Within a level l >= 1, its blocks coupled to none of a lower level come first, those
+  /// coupled to one (the zone l's boundary, on which its Schur complement is dense) at its end;
+  /// within each such group the blocks keep the relative order analyze() gives the whole block
+  /// graph (computed once per pattern and kept, so each new set of levels costs no ordering). The
+  /// zones must nest: a block coupled to one two levels lower or more is a std::logic_error. The
+  /// factor is supernodal.
   void analyze_last(const CholmodMatrix& lower, int block_size, const std::vector<char>& level);
 
   /// After analyze_last() and a successful factorize(): with P the unknowns of zone `level` and
@@ -87,12 +89,17 @@ class SparseCholesky {
   void analyze_given(const CholmodMatrix& lower, const std::int64_t* perm, bool exact);
   /// What every analysis ends with: the factor checked, its size and flops recorded.
   void finish_analysis(const CholmodMatrix& lower);
+  /// The fill-reducing order of a block graph (CHOLMOD's default strategy), kept for the last
+  /// pattern it was computed for.
+  const std::vector<std::int64_t>& block_order(const CholmodMatrix& pattern);
   /// solve(b) for a b whose first `first` entries in the factor's order are zero.
   [[nodiscard]] Eigen::VectorXd solve_from(const Eigen::VectorXd& b, std::int64_t first) const;
 
   std::unique_ptr<Impl> impl_;
   std::int64_t n_ = 0;
   std::vector<std::int64_t> order_;  // after analyze_last(): the unknowns in the factor's order
+  std::vector<std::int64_t> block_order_;  // block_order()'s, and the fingerprint of its graph
+  std::uint64_t block_order_key_ = 0;
   // Per level l >= 1 of analyze_last(), in the factor's order: where its blocks start, and where
   // those coupled to a lower level start (they end where the next level starts); level 0 starts
   // at 0. Empty after analyze().
