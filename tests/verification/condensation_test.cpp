@@ -8,7 +8,9 @@
 // 1 block): the carried stage factors, the monitor's displacements and the collapse bracket must
 // agree. The condensed run must have condensed onto a part of the model and more than once (a
 // zone outgrown and replaced), or the test proves nothing; with reserve zones in K's order, it
-// must also have replaced a zone by a reserve. The same under displacement control, whose
+// must also have replaced a zone by a reserve; condensed in two steps (K onto a region, the
+// region's S onto the zone), it must have condensed onto a region and onto a zone inside a
+// region it had already (without factorizing K). The same under displacement control, whose
 // monitor term must be read in the zone's unknowns.
 #include <gtest/gtest.h>
 
@@ -20,10 +22,19 @@ namespace bimrock {
 namespace {
 
 constexpr PlasticOptions kWhole{.condensed_zone_fraction = 0.0};
-constexpr PlasticOptions kCondensed{
-    .condensed_zone_fraction = 1.0, .least_zone_blocks = 1, .zone_reserves = 0};
-constexpr PlasticOptions kReserves{
-    .condensed_zone_fraction = 1.0, .least_zone_blocks = 1, .zone_reserves = 2};
+constexpr PlasticOptions kCondensed{.condensed_zone_fraction = 1.0,
+                                    .least_zone_blocks = 1,
+                                    .zone_reserves = 0,
+                                    .region_growth = 0.0};
+constexpr PlasticOptions kReserves{.condensed_zone_fraction = 1.0,
+                                   .least_zone_blocks = 1,
+                                   .zone_reserves = 2,
+                                   .region_growth = 0.0};
+constexpr PlasticOptions kRegions{.condensed_zone_fraction = 1.0,
+                                  .least_zone_blocks = 1,
+                                  .zone_reserves = 2,
+                                  .region_growth = 3.0,
+                                  .region_fraction = 1.0};
 
 void expect_condensed(const PlasticResult& r, int blocks, const PlasticOptions& opt) {
   EXPECT_GE(r.condensations, 2) << "no zone was outgrown";
@@ -31,17 +42,25 @@ void expect_condensed(const PlasticResult& r, int blocks, const PlasticOptions& 
     EXPECT_GE(r.reserve_switches, 1) << "no reserve zone was used";
   else
     EXPECT_EQ(r.reserve_switches, 0);
+  if (opt.region_growth > 0.0) {
+    EXPECT_GE(r.regions, 1) << "K was never condensed onto a region";
+    EXPECT_GT(r.condensations, r.regions) << "no zone was condensed inside a region it had";
+  } else {
+    EXPECT_EQ(r.regions, 0);
+  }
   EXPECT_GT(r.zone_blocks, 0);
   EXPECT_LT(r.zone_blocks, blocks) << "the last zone is the whole model";
-  std::printf("%d condensations, %d reserves used, the last zone %d of %d blocks\n",
-              r.condensations, r.reserve_switches, r.zone_blocks, blocks);
+  std::printf(
+      "%d condensations (%d onto regions), %d reserves used, the last zone %d of %d "
+      "blocks\n",
+      r.condensations, r.regions, r.reserve_switches, r.zone_blocks, blocks);
 }
 
 TEST(Condensation, GivesTheSameAnalysisAsTheWholeStiffness) {
   const PlasticResult whole = testing::run_abutment(kWhole);
   EXPECT_EQ(whole.condensations, 1);
   EXPECT_EQ(whole.zone_blocks, static_cast<int>(whole.state.u.size() / 6));
-  for (const PlasticOptions& opt : {kCondensed, kReserves}) {
+  for (const PlasticOptions& opt : {kCondensed, kReserves, kRegions}) {
     const PlasticResult condensed = testing::run_abutment(opt);
     expect_condensed(condensed, static_cast<int>(whole.state.u.size() / 6), opt);
     testing::expect_same_analysis(whole, condensed);
@@ -62,7 +81,7 @@ TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {
   const Model model = build_model(c);
   const PlasticResult whole = run_plastic_analysis(model, kWhole);
   ASSERT_FALSE(whole.collapse || whole.stopped);
-  for (const PlasticOptions& opt : {kCondensed, kReserves}) {
+  for (const PlasticOptions& opt : {kCondensed, kReserves, kRegions}) {
     const PlasticResult condensed = run_plastic_analysis(model, opt);
     expect_condensed(condensed, model.n_blocks(), opt);
     ASSERT_EQ(whole.history.size(), condensed.history.size());

@@ -1,41 +1,74 @@
 #include <bimrock/analysis/condensed_stiffness.hpp>
 
 #include <algorithm>
+#include <memory>
+#include <numeric>
 #include <stdexcept>
 
 namespace bimrock {
 
 namespace {
 constexpr int kBlock = 6;  // unknowns per block
+
+// Every block's neighbours across interfaces (supports excluded).
+std::vector<std::vector<int>> neighbours(const Model& model) {
+  std::vector<std::vector<int>> out(static_cast<std::size_t>(model.n_blocks()));
+  for (const Interface& i : model.interfaces)
+    if (!i.is_support()) {
+      out[static_cast<std::size_t>(i.block_i)].push_back(i.block_j);
+      out[static_cast<std::size_t>(i.block_j)].push_back(i.block_i);
+    }
+  return out;
+}
 }  // namespace
 
 CondensedStiffness::CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower)
-    : lower_(&k_lower), factor_(&k) {}
-
-CondensedStiffness::CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower,
-                                       const std::vector<char>& levels, int level)
-    : zone_(levels.size(), 0), own_factor_(std::make_unique<SparseCholesky>()) {
-  for (std::size_t b = 0; b < levels.size(); ++b)
-    zone_[b] = levels[b] >= level ? 1 : 0;
-  own_lower_ = k.schur_complement(k_lower, level);
-  const std::vector<std::int64_t> unknowns = k.trailing_unknowns(level);
-  std::vector<Eigen::Triplet<double, std::int64_t>> ones;
-  ones.reserve(unknowns.size());
-  for (std::size_t j = 0; j < unknowns.size(); ++j)
-    ones.emplace_back(unknowns[j], static_cast<std::int64_t>(j), 1.0);
-  select_.resize(k_lower.rows(), static_cast<Eigen::Index>(unknowns.size()));
-  select_.setFromTriplets(ones.begin(), ones.end());
-  own_factor_->analyze(own_lower_, kBlock);
-  // S is positive definite where K is (a Schur complement of it): a failure is round-off in a
-  // nearly singular K, reported by factorized() (the caller goes on with K itself).
-  factorized_ = own_factor_->factorize(own_lower_);
-  lower_ = &own_lower_;
-  factor_ = own_factor_.get();
+    : blocks_(static_cast<std::size_t>(k_lower.rows() / kBlock)), lower_(&k_lower), factor_(&k) {
+  std::iota(blocks_.begin(), blocks_.end(), 0);
 }
 
-int CondensedStiffness::zone_blocks() const {
-  return whole() ? static_cast<int>(lower_->rows() / kBlock)
-                 : static_cast<int>(std::count(zone_.begin(), zone_.end(), 1));
+CondensedStiffness::CondensedStiffness(const CondensedStiffness& base, const SparseCholesky& factor,
+                                       int level, bool factorize)
+    : zone_(base.whole() ? base.blocks_.size() : base.zone_.size(), 0) {
+  if (factor.rows() != base.lower().rows())
+    throw std::logic_error("CondensedStiffness: the factor is not of the base's S");
+  own_lower_ = factor.schur_complement(base.lower(), level);
+  // The unknowns of S among base's, then among K's.
+  const std::vector<std::int64_t> unknowns = factor.trailing_unknowns(level);
+  for (std::size_t j = 0; j < unknowns.size(); j += kBlock)
+    blocks_.push_back(base.blocks_[static_cast<std::size_t>(unknowns[j] / kBlock)]);
+  for (int b : blocks_)
+    zone_[static_cast<std::size_t>(b)] = 1;
+  std::vector<Eigen::Triplet<double, std::int64_t>> ones;
+  ones.reserve(unknowns.size());
+  for (std::size_t j = 0; j < unknowns.size(); ++j) {
+    // Column unknowns[j] of base's selection (one 1 in each), or the unknown itself for K.
+    const std::int64_t u =
+        base.whole() ? unknowns[j]
+                     : base.select_.innerIndexPtr()[base.select_.outerIndexPtr()[unknowns[j]]];
+    ones.emplace_back(u, static_cast<std::int64_t>(j), 1.0);
+  }
+  const std::int64_t n = base.whole() ? base.lower().rows() : base.select_.rows();
+  select_.resize(n, static_cast<Eigen::Index>(unknowns.size()));
+  select_.setFromTriplets(ones.begin(), ones.end());
+  lower_ = &own_lower_;
+  if (factorize) {
+    own_factor_ = std::make_unique<SparseCholesky>();
+    own_factor_->analyze(own_lower_, kBlock);
+    // S is positive definite where K is (a Schur complement of it): a failure is round-off in a
+    // nearly singular K, reported by factorized() (the caller goes on with K itself).
+    factorized_ = own_factor_->factorize(own_lower_);
+    factor_ = own_factor_.get();
+  } else {
+    factorized_ = false;
+  }
+}
+
+std::vector<char> CondensedStiffness::on_blocks(const std::vector<char>& per_model_block) const {
+  std::vector<char> out(blocks_.size());
+  for (std::size_t k = 0; k < blocks_.size(); ++k)
+    out[k] = per_model_block[static_cast<std::size_t>(blocks_[k])];
+  return out;
 }
 
 YieldSystem CondensedStiffness::local(const YieldSystem& sys) const {
@@ -59,13 +92,9 @@ Eigen::VectorXd CondensedStiffness::local(const Eigen::VectorXd& v) const {
   return select_.transpose() * v;
 }
 
-std::vector<char> grow_zone(const Model& model, std::vector<char> zone, int target) {
-  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(model.n_blocks()));
-  for (const Interface& i : model.interfaces)
-    if (!i.is_support()) {
-      neighbours[static_cast<std::size_t>(i.block_i)].push_back(i.block_j);
-      neighbours[static_cast<std::size_t>(i.block_j)].push_back(i.block_i);
-    }
+std::vector<char> grow_zone(const Model& model, std::vector<char> zone, int target,
+                            const std::vector<char>* within) {
+  const std::vector<std::vector<int>> next_to = neighbours(model);
   std::vector<int> ring;
   for (int b = 0; b < model.n_blocks(); ++b)
     if (zone[static_cast<std::size_t>(b)])
@@ -74,15 +103,51 @@ std::vector<char> grow_zone(const Model& model, std::vector<char> zone, int targ
   while (count < target && !ring.empty()) {
     std::vector<int> next;
     for (int b : ring)
-      for (int n : neighbours[static_cast<std::size_t>(b)])
-        if (!zone[static_cast<std::size_t>(n)]) {
-          zone[static_cast<std::size_t>(n)] = 1;
+      for (int n : next_to[static_cast<std::size_t>(b)]) {
+        const auto i = static_cast<std::size_t>(n);
+        if (!zone[i] && (!within || (*within)[i])) {
+          zone[i] = 1;
           next.push_back(n);
         }
+      }
     count += static_cast<int>(next.size());
     ring = std::move(next);
   }
   return zone;
+}
+
+std::vector<char> interior(const Model& model, const std::vector<char>& region) {
+  std::vector<char> out = region;
+  for (const Interface& i : model.interfaces) {
+    if (i.is_support())
+      continue;
+    const auto a = static_cast<std::size_t>(i.block_i);
+    const auto b = static_cast<std::size_t>(i.block_j);
+    if (region[a] != region[b])
+      out[a] = out[b] = 0;
+  }
+  return out;
+}
+
+void nest_levels(const Model& model, std::vector<char>& levels) {
+  // Relaxation over the interfaces until nothing changes: each pass settles at least the blocks
+  // one ring further from the lowest levels, and levels are a few at most.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (const Interface& i : model.interfaces) {
+      if (i.is_support())
+        continue;
+      char& a = levels[static_cast<std::size_t>(i.block_i)];
+      char& b = levels[static_cast<std::size_t>(i.block_j)];
+      if (a > b + 1) {
+        a = static_cast<char>(b + 1);
+        changed = true;
+      } else if (b > a + 1) {
+        b = static_cast<char>(a + 1);
+        changed = true;
+      }
+    }
+  }
 }
 
 }  // namespace bimrock

@@ -10,6 +10,11 @@
 /// costs one factorization of K; each active-set iteration then factorizes a matrix of the
 /// zone's size instead of the whole model's, and each column of K^-1 Phi is a solve with S's
 /// factor. The displacements of the whole model are solves with K's factor, once per round.
+///
+/// A condensation may start from another one: K condensed onto a region R, then R's S
+/// condensed onto a zone inside it. Condensing in steps gives the same S (Schur complements
+/// compose: eliminating E then R \ P is eliminating E u (R \ P)), and a zone that outgrows
+/// itself inside R costs a factorization of R's S, not of K.
 #include <memory>
 #include <vector>
 
@@ -24,10 +29,12 @@ class CondensedStiffness {
  public:
   /// No condensation: S is K and its factor K's.
   CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower);
-  /// K condensed onto the zone of blocks of level >= `level`: `k` is K's factor in the order of
-  /// `levels` (SparseCholesky::analyze_last), S is read from it and factorized.
-  CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower,
-                     const std::vector<char>& levels, int level);
+  /// `base` condensed onto its zone of blocks of level >= `level`: `factor` is base's S
+  /// factorized in the order of levels given per block of base (SparseCholesky::analyze_last);
+  /// this S is read from it, and factorized in its own order if `factorize` (else factor()
+  /// must not be used: the S of a region is factorized in the order of the zones inside it).
+  CondensedStiffness(const CondensedStiffness& base, const SparseCholesky& factor, int level,
+                     bool factorize = true);
 
   CondensedStiffness(const CondensedStiffness&) = delete;
   CondensedStiffness& operator=(const CondensedStiffness&) = delete;
@@ -41,7 +48,11 @@ class CondensedStiffness {
     return whole() || zone_[static_cast<std::size_t>(block)] != 0;
   }
   /// Blocks of the zone (all of them when whole()).
-  [[nodiscard]] int zone_blocks() const;
+  [[nodiscard]] int zone_blocks() const { return static_cast<int>(blocks_.size()); }
+  /// The model's blocks in the order of S's unknowns (6 each).
+  [[nodiscard]] const std::vector<int>& blocks() const { return blocks_; }
+  /// Per block of S (in the order of blocks()), the value `per_model_block` gives its block.
+  [[nodiscard]] std::vector<char> on_blocks(const std::vector<char>& per_model_block) const;
   /// S, lower triangle, in the unknowns' order of local().
   [[nodiscard]] const SparseMatrix& lower() const { return *lower_; }
   [[nodiscard]] const SparseCholesky& factor() const { return *factor_; }
@@ -53,8 +64,9 @@ class CondensedStiffness {
   [[nodiscard]] Eigen::VectorXd local(const Eigen::VectorXd& v) const;
 
  private:
-  std::vector<char> zone_;  // per block; empty when whole()
-  SparseMatrix select_;     // n x |P|: column k picks the unknown of S's k-th
+  std::vector<char> zone_;  // per block of the model; empty when whole()
+  std::vector<int> blocks_;
+  SparseMatrix select_;     // n x |P|: column k picks the unknown of S's k-th (empty when whole())
   SparseMatrix own_lower_;  // S when condensed
   std::unique_ptr<SparseCholesky> own_factor_;
   const SparseMatrix* lower_ = nullptr;
@@ -63,7 +75,17 @@ class CondensedStiffness {
 };
 
 /// The blocks of `needed` and rings of their neighbours (blocks that share an interface), ring
-/// by ring, until at least `target` blocks are flagged or no block is left to add.
-std::vector<char> grow_zone(const Model& model, std::vector<char> needed, int target);
+/// by ring, until at least `target` blocks are flagged or no block is left to add. With
+/// `within`, only blocks it flags are added.
+std::vector<char> grow_zone(const Model& model, std::vector<char> needed, int target,
+                            const std::vector<char>* within = nullptr);
+
+/// The blocks of `region` none of whose neighbours is outside it.
+std::vector<char> interior(const Model& model, const std::vector<char>& region);
+
+/// Lowers each block's level to at most one above the lowest of its neighbours', so that the
+/// zones of levels >= 1 nest as SparseCholesky::analyze_last needs (a zone's rings cut short,
+/// e.g. by a region's edge, leave blocks next to others two levels lower).
+void nest_levels(const Model& model, std::vector<char>& levels);
 
 }  // namespace bimrock

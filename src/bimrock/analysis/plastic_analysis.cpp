@@ -54,14 +54,27 @@ constexpr double kAimAtBound = 0.9;
 constexpr double kZoneGrowth = 1.5;
 constexpr double kZoneRegrowth = 1.2;
 constexpr double kReserveGrowth = 1.25;
+/// Regions (PlasticOptions::region_growth): a new one has at least kRegionRegrowth times the
+/// blocks of the last one (a region outgrown is outgrown again as the plastic zone spreads),
+/// and none is made that is not kRegionGrowthLeast times the zone's target
+/// (PlasticOptions::region_fraction caps it).
+constexpr double kRegionRegrowth = 2.0;
+constexpr double kRegionGrowthLeast = 2.0;
 
 // The LCP solvers and what they keep from one increment to the next.
 struct LcpSolvers {
   LcpSolvers(SparseCholesky& k_factor, const SparseMatrix& k_matrix)
-      : k(k_factor), k_lower(k_matrix) {}
-  SparseCholesky& k;  // K's factor: reordered when the condensation's zone changes
+      : k(k_factor), k_lower(k_matrix), whole_k(k_factor, k_matrix) {}
+  SparseCholesky& k;  // K's factor: reordered when the region (or the zone) changes
   const SparseMatrix& k_lower;
-  std::vector<char> levels;  // per block: the nested zones of k's order (empty: K's own order)
+  const CondensedStiffness whole_k;  // K itself: the base of a region, or of zones without one
+  // The region (PlasticOptions::region_growth): K condensed onto it, without a factor of its own
+  // (null: none, the zones are condensed from K itself), and its S factorized in the order of
+  // the zones inside it.
+  std::unique_ptr<CondensedStiffness> region;
+  std::vector<char> region_inside;  // per block of the model: the region's, its edge excluded
+  SparseCholesky region_factor;
+  std::vector<char> levels;  // per block of the model: the nested zones of the base's order
   int level = 0;             // the zone condensed onto: blocks of levels >= level
   std::unique_ptr<CondensedStiffness> condensed;  // S: the LCP's stiffness (or K itself)
   ActiveSetLcp active_set;
@@ -73,11 +86,20 @@ struct LcpSolvers {
   CholeskyWork retired_s;                     // and of their S's factors
   int condensations = 0;
   int reserve_switches = 0;
-  int last_zone = 0;  // blocks of the last zone condensed onto first (not of its reserves)
+  int regions = 0;
+  int last_zone = 0;    // blocks of the last zone condensed onto first (not of its reserves)
+  int last_region = 0;  // blocks of the last region
+
+  // What zones are condensed from: the region's S, or K.
+  [[nodiscard]] const CondensedStiffness& base() const { return region ? *region : whole_k; }
+  SparseCholesky& base_factor() { return region ? region_factor : k; }
+  [[nodiscard]] const SparseCholesky& base_factor() const { return region ? region_factor : k; }
 
   // Condenses K onto a zone that holds the blocks flagged in `needed`, unless the one it has
-  // does: onto a reserve zone of K's factor if one holds them, else onto a new zone (K
-  // factorized in a new order). What was kept in S's unknowns goes.
+  // does: onto a reserve zone of the base's factor if one holds them, else onto a new zone (the
+  // base factorized in a new order): inside the region if it holds the new zone, else inside a
+  // new region (K factorized with the region last), or from K itself where a region would be
+  // too large to be worth it. What was kept in S's unknowns goes.
   void condense(const Model& model, const std::vector<char>& needed, const PlasticOptions& opt) {
     if (condensed && holds(needed, level))  // level 0: K itself holds every block
       return;
@@ -91,42 +113,103 @@ struct LcpSolvers {
       }
     // A margin around what is needed now, and more blocks than the last zone: a zone outgrown
     // once is outgrown again as the plastic zone spreads.
-    auto size = [](const std::vector<char>& z) {
-      return static_cast<int>(std::count(z.begin(), z.end(), 1));
-    };
-    std::vector<char> zone =
-        grow_zone(model, needed,
-                  std::max({opt.least_zone_blocks, static_cast<int>(kZoneGrowth * size(needed)),
-                            static_cast<int>(kZoneRegrowth * last_zone)}));
+    const int target =
+        std::max({opt.least_zone_blocks, static_cast<int>(kZoneGrowth * size(needed)),
+                  static_cast<int>(kZoneRegrowth * last_zone)});
     retire();
-    last_zone = size(zone);
     const double most = opt.condensed_zone_fraction * model.n_blocks();
-    if (size(zone) > most) {
+    // Inside the region, if it still holds the new zone: where the region's edge cuts the
+    // zone's rings, nest_levels() lowers them, and a zone that then misses a needed block asks
+    // for a new region.
+    int top = 0;
+    if (region) {
+      top = plan(model, needed, target, most, opt);
+      if (!holds(needed, top))
+        drop_region();
+    }
+    if (!region) {
+      if (opt.region_growth > 0.0)
+        make_region(model, needed, target, opt.region_growth,
+                    std::min(most, opt.region_fraction * model.n_blocks()));
+      top = plan(model, needed, target, most, opt);
+      if (region && !holds(needed, top)) {  // only where the region was too small for it
+        drop_region();
+        top = plan(model, needed, target, most, opt);
+      }
+    }
+    if (top == 0) {
       whole();
     } else {
-      // The zone, then its reserves around it (while they are within the fraction): levels
-      // counted from the outermost reserve, 1.
-      std::vector<std::vector<char>> zones{zone};
-      for (int r = 0; r < opt.zone_reserves; ++r) {
-        std::vector<char> outer =
-            grow_zone(model, zones.back(), static_cast<int>(kReserveGrowth * size(zones.back())));
-        if (size(outer) > most || size(outer) == size(zones.back()))
-          break;
-        zones.push_back(std::move(outer));
-      }
-      levels.assign(needed.size(), 0);
-      for (const std::vector<char>& z : zones)
-        for (std::size_t b = 0; b < z.size(); ++b)
-          levels[b] = static_cast<char>(levels[b] + z[b]);
-      k.analyze_last(k_lower, 6, levels);
-      if (!k.factorize(k_lower))
+      const SparseMatrix& s = base().lower();
+      base_factor().analyze_last(s, 6, base().on_blocks(levels));
+      if (!base_factor().factorize(s))
         throw std::logic_error("condense: K, positive definite before, is not now");
-      use(static_cast<int>(zones.size()));
+      use(top);
     }
     ++condensations;
-    if (!condensed->factorized())  // round-off in a nearly singular K: K itself, from now on
+    if (!condensed->factorized()) {  // round-off in a nearly singular K: K itself, from now on
+      drop_region();
       whole();
+    }
     report("condensation", needed);
+  }
+  static int size(const std::vector<char>& z) {
+    return static_cast<int>(std::count(z.begin(), z.end(), 1));
+  }
+  // The levels of a new zone of `target` blocks around `needed` and of its reserves (inside the
+  // region if there is one), nested; the zone's level, or 0 where the zone would be more than
+  // `most` blocks of K itself (not worth condensing).
+  int plan(const Model& model, const std::vector<char>& needed, int target, double most,
+           const PlasticOptions& opt) {
+    const std::vector<char>* within = region ? &region_inside : nullptr;
+    std::vector<char> zone = grow_zone(model, needed, target, within);
+    last_zone = size(zone);
+    if (!region && size(zone) > most)
+      return 0;
+    // The zone, then its reserves around it (while they are within the fraction): levels
+    // counted from the outermost reserve, 1.
+    std::vector<std::vector<char>> zones{std::move(zone)};
+    for (int r = 0; r < opt.zone_reserves; ++r) {
+      std::vector<char> outer = grow_zone(
+          model, zones.back(), static_cast<int>(kReserveGrowth * size(zones.back())), within);
+      if (size(outer) > most || size(outer) == size(zones.back()))
+        break;
+      zones.push_back(std::move(outer));
+    }
+    levels.assign(needed.size(), 0);
+    for (const std::vector<char>& z : zones)
+      for (std::size_t b = 0; b < z.size(); ++b)
+        levels[b] = static_cast<char>(levels[b] + z[b]);
+    if (within)  // a needed block off the region's inside stays out, and fails holds()
+      for (std::size_t b = 0; b < levels.size(); ++b)
+        levels[b] = (*within)[b] ? levels[b] : 0;
+    nest_levels(model, levels);
+    return static_cast<int>(zones.size());
+  }
+  // K condensed onto a region around `needed` of `growth` times the zone's target, at least
+  // kRegionRegrowth times the last region, at most `most` blocks (K factorized with the region
+  // last); none where that leaves no room for the zone to grow.
+  void make_region(const Model& model, const std::vector<char>& needed, int target, double growth,
+                   double most) {
+    const double wanted = std::max(growth * target, kRegionRegrowth * last_region);
+    const int blocks = static_cast<int>(std::min(wanted, most));
+    if (blocks < kRegionGrowthLeast * target)
+      return;
+    std::vector<char> r = grow_zone(model, needed, blocks);
+    if (size(r) > most)
+      return;
+    k.analyze_last(k_lower, 6, r);
+    if (!k.factorize(k_lower))
+      throw std::logic_error("condense: K, positive definite before, is not now");
+    region = std::make_unique<CondensedStiffness>(whole_k, k, 1, false);
+    // Zones keep off the region's edge, whose blocks its S couples all together.
+    region_inside = interior(model, r);
+    last_region = region->zone_blocks();
+    ++regions;
+  }
+  void drop_region() {
+    region.reset();
+    region_inside.clear();
   }
   // Whether the zone `l` (0: the whole model) holds every flagged block.
   [[nodiscard]] bool holds(const std::vector<char>& needed, int l) const {
@@ -137,12 +220,13 @@ struct LcpSolvers {
         return false;
     return true;
   }
-  // Condenses onto zone l of K's factor as it is.
+  // Condenses onto zone l of the base's factor as it is.
   void use(int l) {
     level = l;
-    condensed = std::make_unique<CondensedStiffness>(k, k_lower, levels, l);
+    condensed = std::make_unique<CondensedStiffness>(base(), base_factor(), l);
     emplace_solvers();
   }
+  // No condensation: K itself, in its own order (the last zone's is as good for its solves).
   void whole() {
     level = 0;
     levels.clear();
@@ -170,12 +254,12 @@ struct LcpSolvers {
   void report(const char* what, const std::vector<char>& needed) const {
     if (std::getenv("BIMROCK_DEBUG_LCP"))
       std::fprintf(stderr,
-                   "%s %d (+%d reserves): %d blocks needed, zone of %d (level %d of %d), "
-                   "%lld entries in K's factor\n",
-                   what, condensations, reserve_switches,
+                   "%s %d (+%d reserves, %d regions): %d blocks needed, zone of %d (level %d of "
+                   "%d), region of %d, %lld entries in K's factor\n",
+                   what, condensations, reserve_switches, regions,
                    static_cast<int>(std::count(needed.begin(), needed.end(), 1)),
-                   condensed->zone_blocks(), level, k.levels(),
-                   static_cast<long long>(k.factor_nonzeros()));
+                   condensed->zone_blocks(), level, base_factor().levels(),
+                   region ? region->zone_blocks() : 0, static_cast<long long>(k.factor_nonzeros()));
   }
   static void add(CholeskyWork& total, const CholeskyWork& w) {
     total.factorizations += w.factorizations;
@@ -692,6 +776,7 @@ PlasticResult with_solver_work(PlasticResult result, const SparseCholesky& k,
   result.timings.add("(solves with S, K condensed)", s.solve_seconds);
   result.condensations = solvers.condensations;
   result.reserve_switches = solvers.reserve_switches;
+  result.regions = solvers.regions;
   result.zone_blocks = solvers.condensed ? solvers.condensed->zone_blocks() : 0;
   return result;
 }

@@ -54,6 +54,16 @@ struct PlasticOptions {
   /// rings of blocks larger): a zone outgrown is replaced by a reserve that holds what is
   /// needed without factorizing K again (0: none).
   int zone_reserves = 2;
+  /// Zones are condensed in two steps where it pays: K onto a region of this many times the
+  /// zone's blocks (at least twice the last region; within condensed_zone_fraction of the
+  /// model), then the region's S onto the zone. A zone outgrown inside its region costs a
+  /// factorization of the region's S instead of K's (0: no regions, zones condensed from K).
+  double region_growth = 4.0;
+  /// A region has at most this fraction of the model's blocks: a larger one costs a good part
+  /// of K's factorization at each zone condensed from it, and its factor adds to the peak
+  /// memory (at 10^4 blocks, regions of a third of the model saved no time and took the memory
+  /// from 1.66 to 1.96 times the limit's: docs/performance.md, session 14).
+  double region_fraction = 0.25;
   /// Record each phase's peak resident memory in the timings (benchmarks).
   bool track_memory = false;
 };
@@ -117,6 +127,7 @@ struct PlasticResult {
   /// factor, and the blocks of the last zone (docs/formulation.md).
   int condensations = 0;
   int reserve_switches = 0;
+  int regions = 0;  ///< times K was condensed onto a region (PlasticOptions::region_growth)
   int zone_blocks = 0;
 };
 

@@ -50,6 +50,7 @@ struct Run {
   bool collapsed = false;
   int condensations = 0;     ///< times K was condensed onto a plastic zone
   int reserve_switches = 0;  ///< times a zone was replaced by a reserve of the same factor
+  int regions = 0;           ///< of the condensations, those that factorized K (onto a region)
   int zone_blocks = 0;       ///< blocks of the last zone
 };
 
@@ -191,6 +192,7 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
   run.collapsed = result.collapse.has_value();
   run.condensations = result.condensations;
   run.reserve_switches = result.reserve_switches;
+  run.regions = result.regions;
   run.zone_blocks = result.zone_blocks;
   measure_limit(model, run);
   return run;
@@ -245,11 +247,11 @@ void print_row(const Row& r) {
              r.first.interfaces, r.first.unknowns);
   if (r.model == "plastic")
     fmt::print(
-        ", {} yield points, {} increments, largest LCP {} rows{}, K condensed {} times, a "
-        "reserve zone used {} times (last zone {} blocks)",
+        ", {} yield points, {} increments, largest LCP {} rows{}, K condensed {} times ({} "
+        "times onto a region), a reserve zone used {} times (last zone {} blocks)",
         r.first.yield_points, r.first.increments, r.first.lcp_rows_max,
-        r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.reserve_switches,
-        r.first.zone_blocks);
+        r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.regions,
+        r.first.reserve_switches, r.first.zone_blocks);
   fmt::print("\n  {:<34} {:>10} {:>10}\n", "phase", "median s", "RSS peak");
   for (const auto& [phase, s] : r.median_seconds) {
     const auto peak = r.peak_bytes.find(phase);
@@ -285,6 +287,7 @@ nlohmann::json to_json(const Row& r) {
           {"collapsed", r.first.collapsed},
           {"condensations", r.first.condensations},
           {"reserve_switches", r.first.reserve_switches},
+          {"regions", r.first.regions},
           {"zone_blocks", r.first.zone_blocks},
           {"phases", phases},
           {"whole_seconds", r.total},
