@@ -39,8 +39,8 @@ class CondensedStiffness {
   CondensedStiffness(const CondensedStiffness&) = delete;
   CondensedStiffness& operator=(const CondensedStiffness&) = delete;
 
-  /// S's factorization succeeded (false only where round-off in a nearly singular K made S
-  /// indefinite: then it must not be used).
+  /// S's factorization succeeded (false where round-off in a nearly singular K made S
+  /// indefinite, or where S was not factorized: then factor() must not be used).
   [[nodiscard]] bool factorized() const { return factorized_; }
   /// S = K: nothing condensed.
   [[nodiscard]] bool whole() const { return zone_.empty(); }

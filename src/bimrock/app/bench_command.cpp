@@ -50,7 +50,7 @@ struct Run {
   bool collapsed = false;
   int condensations = 0;     ///< times K was condensed onto a plastic zone
   int reserve_switches = 0;  ///< times a zone was replaced by a reserve of the same factor
-  int regions = 0;           ///< of the condensations, those that factorized K (onto a region)
+  int regions = 0;           ///< times K was factorized onto a region (zones then come from it)
   int zone_blocks = 0;       ///< blocks of the last zone
 };
 
@@ -248,7 +248,7 @@ void print_row(const Row& r) {
   if (r.model == "plastic")
     fmt::print(
         ", {} yield points, {} increments, largest LCP {} rows{}, K condensed {} times ({} "
-        "times onto a region), a reserve zone used {} times (last zone {} blocks)",
+        "regions), a reserve zone used {} times (last zone {} blocks)",
         r.first.yield_points, r.first.increments, r.first.lcp_rows_max,
         r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.regions,
         r.first.reserve_switches, r.first.zone_blocks);

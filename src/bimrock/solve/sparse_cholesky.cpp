@@ -222,13 +222,12 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
   // their fill into the zones ordered after them: the last condensation of the 10^4-block bench
   // cost 2.65 times the flops of K's own factorization, 1.93 times this way (docs/performance.md,
   // session 14).
-  for (std::int64_t b = 0; b < nb; ++b)
-    if (level[static_cast<std::size_t>(b)] < 0)
-      throw std::logic_error("SparseCholesky::analyze_last: a negative level");
   std::vector<std::vector<std::int64_t>> groups(static_cast<std::size_t>(2 * top + 1));
   for (std::int64_t b : block_order(pattern)) {
     const auto i = static_cast<std::size_t>(b);
     const int l = level[i];
+    if (l < 0)
+      throw std::logic_error("SparseCholesky::analyze_last: a negative level");
     groups[l == 0 ? 0 : static_cast<std::size_t>(2 * l - 1 + coupled[i])].push_back(b);
   }
   std::vector<std::int64_t> coarse;
