@@ -3,9 +3,12 @@
 // planted solutions, and Lemke on larger positive definite problems, whose solution is unique.
 // On problems without a solution it must never answer "solved".
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <Eigen/Cholesky>
 
 #include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/lcp_enumeration.hpp>
@@ -283,6 +286,82 @@ TEST(ActiveSetLcp, ProjectedNewtonTakesOverWhereTheBlockRuleStalls) {
     ++rescued;
   }
   EXPECT_GE(rescued, 10) << "the problems must exercise the safeguard";
+}
+
+// The active-set equations of a dense symmetric LCP whose solves, asked only for their own w
+// (Check::from_solve), report none of the violated rows: a solver that took such a w as a
+// result would stop at the first iterate with a wrong answer.
+class HidingEquations final : public ActiveSetEquations {
+ public:
+  explicit HidingEquations(LcpProblem p) : p_(std::move(p)) {}
+  [[nodiscard]] Eigen::Index size() const override { return p_.q.size(); }
+  [[nodiscard]] const VectorXd& q() const override { return p_.q; }
+  [[nodiscard]] bool symmetric() const override { return true; }
+  [[nodiscard]] double diagonal_bound(Eigen::Index row) const override {
+    return p_.m(row, row);
+  }
+  using ActiveSetEquations::solve;
+  Solution solve(const std::vector<Eigen::Index>& active, const Damping& damping,
+                 Check check) override {
+    const auto k = static_cast<Eigen::Index>(active.size());
+    MatrixXd a(k, k);
+    VectorXd rhs(k);
+    for (Eigen::Index i = 0; i < k; ++i) {
+      for (Eigen::Index j = 0; j < k; ++j)
+        a(i, j) = p_.m(active[i], active[j]);
+      rhs(i) = -p_.q(active[i]);
+      if (damping.factor.size() > 0) {
+        const double d = damping.factor(i) * p_.m(active[i], active[i]);
+        a(i, i) += d;
+        rhs(i) += d * damping.center(active[i]);
+      }
+    }
+    Solution out;
+    out.z = VectorXd::Zero(size());
+    const VectorXd za = a.ldlt().solve(rhs);
+    for (Eigen::Index i = 0; i < k; ++i)
+      out.z(active[i]) = za(i);
+    out.w = p_.m * out.z + p_.q;
+    out.w_scale = p_.m.cwiseAbs() * out.z.cwiseAbs() + p_.q.cwiseAbs();
+    if (check == Check::from_solve) {
+      out.w = out.w.cwiseMax(0.0);
+      out.measured = false;
+    }
+    out.regular = true;
+    return out;
+  }
+  LcpResult result(LcpStatus status, VectorXd z, int steps) override {
+    LcpResult r;
+    r.status = status;
+    r.w = p_.m * z + p_.q;
+    r.residuals = measure(z, r.w, VectorXd(p_.m.cwiseAbs() * z.cwiseAbs() + p_.q.cwiseAbs()));
+    r.z = std::move(z);
+    r.steps = steps;
+    return r;
+  }
+
+ private:
+  LcpProblem p_;
+};
+
+TEST(ActiveSetLcp, AWTheSolveDidNotMeasureIsNeverTakenAsTheResult) {
+  // Lemke's solution (unique: M positive definite), whether projected Newton takes over at
+  // once or after the block rule, from the best iterate as measured.
+  for (int stall : {0, 1}) {
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+      std::mt19937 rng(seed);
+      const LcpProblem p{testing::random_spd(60, rng), testing::random_vector(60, rng)};
+      const LcpResult lemke = Lemke().solve(p);
+      ASSERT_EQ(lemke.status, LcpStatus::solved);
+      ActiveSetOptions options;
+      options.stall_iterations = stall;
+      HidingEquations equations(p);
+      const LcpResult r = ActiveSetLcp(options).solve(equations);
+      ASSERT_EQ(r.status, LcpStatus::solved) << "seed " << seed << " stall " << stall;
+      EXPECT_LE(r.residuals.worst_relative(), 1e-9);
+      EXPECT_LE((r.z - lemke.z).cwiseAbs().maxCoeff(), 1e-9 * lemke.z.cwiseAbs().maxCoeff());
+    }
+  }
 }
 
 }  // namespace

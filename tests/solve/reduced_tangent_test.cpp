@@ -124,6 +124,45 @@ TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   EXPECT_EQ(equations.factorizations(), 1);
 }
 
+TEST(ReducedTangent, TheSolvesOwnWIsTheDenseBlocksFreshOrThroughAnUpdate) {
+  // Check::from_solve: w from the tangent's own displacements, not measured with K. It must
+  // still be M z + q of the dense second method, for a factorized tangent and for one solved
+  // through the kept factor (Woodbury), and say that it was not measured.
+  ChainLcp chain;
+  make_chain(40, 23, chain);
+  TangentFactor tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent, {64, 64.0});
+  const std::vector<Eigen::Index> first = every(3, equations.size());
+  std::vector<Eigen::Index> next = first;
+  next.erase(std::find(next.begin(), next.end(), 9));        // group 4 leaves
+  next.insert(std::find(next.begin(), next.end(), 21), 20);  // group 10 joins
+  for (const auto& active : {first, next}) {
+    const ActiveSetEquations::Solution s =
+        equations.solve(active, {}, ActiveSetEquations::Check::from_solve);
+    ASSERT_TRUE(s.regular);
+    EXPECT_FALSE(s.measured);
+    const VectorXd z = dense_solution(chain, active, {});
+    const VectorXd w = chain.m_dense * z + chain.split.q;
+    EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
+    EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+  }
+  EXPECT_EQ(equations.factorizations(), 1);
+  EXPECT_EQ(equations.updated_factors(), 1);
+  EXPECT_TRUE(equations.solve(next).measured);
+}
+
+TEST(ReducedTangent, TheDiagonalBoundIsAtLeastTheDiagonalOfM) {
+  // M_rr = N_rr - phi_r . K^-1 phi_r: the bound N_rr, against the dense M.
+  ChainLcp chain;
+  make_chain(20, 29, chain);
+  TangentFactor tangent;
+  const ReducedTangentEquations equations(chain.split, chain.k, tangent);
+  for (Eigen::Index r = 0; r < equations.size(); ++r) {
+    EXPECT_GE(equations.diagonal_bound(r), chain.m_dense(r, r));
+    EXPECT_GT(chain.m_dense(r, r), 0.0);
+  }
+}
+
 TEST(ReducedTangent, ATermOutsideThePatternOfKIsAddedWithAPatternOfItsOwn) {
   // The tangent is formed in K's pattern; point 6 couples blocks 5 and 6, which K does not.
   ChainLcp chain;

@@ -104,7 +104,9 @@ class ColumnEquations final : public ActiveSetEquations {
   [[nodiscard]] bool symmetric() const override { return problem_.symmetric(); }
 
   using ActiveSetEquations::solve;
-  Solution solve(const std::vector<Eigen::Index>& rows, const Damping& damping) override {
+  // w is exact for the columns known, whatever the check asked for.
+  Solution solve(const std::vector<Eigen::Index>& rows, const Damping& damping,
+                 Check /*check*/) override {
     const Eigen::Index n = size();
     fetch(rows);
     const auto k = static_cast<Eigen::Index>(rows.size());
@@ -209,6 +211,8 @@ class ColumnEquations final : public ActiveSetEquations {
 // was measured by the solve (no back-solve).
 LcpResult as_iterate(const Eigen::VectorXd& z, const ActiveSetEquations::Solution& step,
                      int steps) {
+  if (!step.measured)
+    throw std::logic_error("active-set LCP: an iterate taken from a w not measured");
   LcpResult r;
   r.status = LcpStatus::solved;
   r.z = z;
@@ -402,10 +406,13 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
   LcpResult best = newton ? problem.result(LcpStatus::solved, Eigen::VectorXd::Zero(n), 0)
                           : LcpResult();  // measured: no back-solve for z = 0
   double best_objective = 0.0;
+  bool best_measured = true;  // else best.z only, measured before projected Newton starts
   auto after_block_rule = [&](LcpStatus status, int iteration) {
-    if (newton)
-      return projected_newton(problem, options_, best, iteration, trace);
-    return solved_or(status, iteration);
+    if (!newton)
+      return solved_or(status, iteration);
+    if (!best_measured)
+      best = problem.result(LcpStatus::solved, best.z, iteration);
+    return projected_newton(problem, options_, best, iteration, trace);
   };
   Eigen::Index fewest_violated = n + 1;  // the best count of violated rows so far
   int stalled = 0;                       // iterations since it was last lowered
@@ -427,7 +434,10 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     for (Eigen::Index i = 0; i < n; ++i)
       if (active[static_cast<std::size_t>(i)])
         rows.push_back(i);
-    ActiveSetEquations::Solution step = problem.solve(rows);
+    // The block rule needs only the signs of z and w: w from the solve's own equations (the
+    // iterate that passes the rule is measured before it is taken).
+    ActiveSetEquations::Solution step =
+        problem.solve(rows, {}, ActiveSetEquations::Check::from_solve);
     if (!step.regular && step.ray.size() != n && newton)  // singular, not a mechanism
       return after_block_rule(LcpStatus::numerical_failure, iteration);
     if (!step.regular) {
@@ -442,15 +452,35 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     z = std::move(step.z);
     const Eigen::VectorXd& w = step.w;
     if (newton) {
-      // The iterate projected on z >= 0; where it has no negative entry it is z itself, whose w
-      // the step measured already (no back-solve).
-      LcpResult projected = z.size() > 0 && z.minCoeff() >= 0.0
-                                ? as_iterate(z, step, iteration)
-                                : problem.result(LcpStatus::solved, z.cwiseMax(0.0), iteration);
-      const double f = objective(projected.z, projected.w, q);
-      if (f < best_objective) {
-        best_objective = f;
-        best = std::move(projected);
+      // The iterate projected on z >= 0, a start for projected Newton. Where the step measured
+      // w and z has no negative entry, it is z itself with its w (no back-solve).
+      if (step.measured) {
+        LcpResult projected = z.size() > 0 && z.minCoeff() >= 0.0
+                                  ? as_iterate(z, step, iteration)
+                                  : problem.result(LcpStatus::solved, z.cwiseMax(0.0), iteration);
+        const double f = objective(projected.z, projected.w, q);
+        if (f < best_objective) {
+          best_objective = f;
+          best = std::move(projected);
+          best_measured = true;
+        }
+      } else {
+        // An upper bound of the objective there, without a back-solve: with d = max(z, 0) - z,
+        // f(z + d) = f(z) + w.d + d.M d / 2 and d.M d <= (sum |d_i| sqrt(M_ii))^2 for a positive
+        // semi-definite M (|M_ij| <= sqrt(M_ii M_jj)). It ranks the starts only: the one chosen
+        // is measured before projected Newton starts from it.
+        const Eigen::VectorXd clipped = z.cwiseMax(0.0);
+        double spread = 0.0;
+        for (Eigen::Index i = 0; i < n; ++i)
+          if (clipped(i) != z(i))
+            spread += (clipped(i) - z(i)) * std::sqrt(problem.diagonal_bound(i));
+        const double f =
+            objective(z, w, q) + w.dot(clipped - z) + 0.5 * spread * spread;
+        if (f < best_objective) {
+          best_objective = f;
+          best.z = clipped;
+          best_measured = false;
+        }
       }
     }
     // Rows that the rule would change only for round-off (z_i or w_i ~ 0, a degenerate

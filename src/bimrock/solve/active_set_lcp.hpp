@@ -21,6 +21,7 @@
 /// and a proximal damping of singular blocks): it cannot cycle. A non-symmetric M goes on with
 /// Murty's rule after a cycle. Otherwise it answers solved, or iteration_limit /
 /// numerical_failure (a result that fails the check): the caller then falls back to Lemke.
+#include <limits>
 #include <utility>
 
 #include <bimrock/solve/lcp.hpp>
@@ -62,13 +63,24 @@ class ActiveSetEquations {
   /// quadratic program min 1/2 z.M z + q.z over z >= 0, which the iteration uses when the
   /// block rule stalls.
   [[nodiscard]] virtual bool symmetric() const { return false; }
+  /// How a solve finds w: measured as M z + q independently of the solve (where M is in
+  /// parts, one back-solve with K; refined once where it falls short of the accuracy), or from
+  /// the solve's own equations (w_A = 0 by construction). The latter is enough to choose the
+  /// next active set; a result is accepted, and an objective compared, only as measured.
+  enum class Check { measured, from_solve };
   struct Solution {
     bool regular = false;     ///< false: M_AA is singular (or could not be factorized)
+    bool measured = true;     ///< w was measured (Check::measured, or exact for this M)
     Eigen::VectorXd z;        ///< zero off the active rows, M_AA z_A = -q_A on them
     Eigen::VectorXd w;        ///< M z + q
     Eigen::VectorXd w_scale;  ///< the size of the terms that sum to each w_i (|M| |z| + |q|)
     Eigen::VectorXd ray;  ///< if singular: a Farkas certificate of no solution, if one was found
   };
+  /// An upper bound of M_rr (infinity: none known). It bounds the objective at an iterate whose
+  /// w was not measured (Check::from_solve).
+  [[nodiscard]] virtual double diagonal_bound(Eigen::Index /*row*/) const {
+    return std::numeric_limits<double>::infinity();
+  }
   /// A proximal term D (z_A - center_A) added to the active rows' equations, with D diagonal:
   /// factor(r) >= 0 (one per active row; empty for none) times the row's own diagonal term (M_rr,
   /// or N_rr for a representation that keeps M in parts). It makes a singular active block
@@ -80,9 +92,12 @@ class ActiveSetEquations {
   /// The solution of the equations of the active rows `active` (sorted):
   /// M_AA z_A + D (z_A - center_A) = -q_A, z = 0 elsewhere.
   [[nodiscard]] virtual Solution solve(const std::vector<Eigen::Index>& active,
-                                       const Damping& damping) = 0;
+                                       const Damping& damping, Check check) = 0;
+  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active, const Damping& damping) {
+    return solve(active, damping, Check::measured);
+  }
   [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active) {
-    return solve(active, Damping{});
+    return solve(active, Damping{}, Check::measured);
   }
   /// Any z with its w = M z + q and residuals on the whole LCP.
   [[nodiscard]] virtual LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) = 0;

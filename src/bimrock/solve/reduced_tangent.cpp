@@ -119,7 +119,12 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
 
 ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k,
                                                  TangentFactor& tangent, TangentUpdateLimits limits)
-    : lcp_(lcp), k_(k), tangent_(tangent), c_transposed_(lcp.c->transpose()), limits_(limits) {}
+    : lcp_(lcp),
+      k_(k),
+      tangent_(tangent),
+      c_transposed_(lcp.c->transpose()),
+      n_diagonal_(lcp.n->diagonal()),
+      limits_(limits) {}
 
 bool ReducedTangentEquations::factorize(const CholmodMatrix& tangent) {
   // The tangent has K's pattern whenever each yield point couples blocks K couples; else
@@ -379,15 +384,16 @@ Eigen::VectorXd ReducedTangentEquations::solve_tangent(const Eigen::VectorXd& rh
 }
 
 ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Eigen::Index>& active,
-                                                            const Damping& damping) {
-  std::optional<Solution> out = solve_on(active, damping, true);
+                                                            const Damping& damping, Check check) {
+  std::optional<Solution> out = solve_on(active, damping, true, check);
   if (!out)
-    out = solve_on(active, damping, false);
+    out = solve_on(active, damping, false, check);
   return std::move(*out);
 }
 
 std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
-    const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update) {
+    const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update,
+    Check check) {
   const bool damped = damping.factor.size() > 0;
   const Eigen::Index m = size();
   const Eigen::Index n = lcp_.k_lower->rows();
@@ -448,6 +454,7 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
   const Update* through = update ? &*update : nullptr;
   // z_A with M_AA z_A = -v_A, through the tangent: S x = -Phi_A N_AA^-1 v_A, then
   // z_A = N_AA^-1 (C_A x - v_A). Added to out.z.
+  Eigen::VectorXd x;  // the plastic displacements: of the last solve, then as measured
   auto add_solution = [&](const Eigen::VectorXd& v) {
     Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
     std::vector<Eigen::VectorXd> t(locals.size());
@@ -464,7 +471,7 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
           rhs(p.row()) -= p.value() * nv(i);
       t[g] = std::move(v_local);
     }
-    const Eigen::VectorXd x = solve_tangent(rhs, through);
+    x = solve_tangent(rhs, through);
     for (std::size_t g = 0; g < locals.size(); ++g) {
       const Local& l = locals[g];
       const Eigen::VectorXd z_local = l.inverse * (strain(active, l, x) - t[g]);
@@ -482,7 +489,6 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
           damping.factor(static_cast<Eigen::Index>(r)) * lcp_.n->coeff(active[r], active[r]);
   const Eigen::VectorXd shifted_q =
       damped ? Eigen::VectorXd(q() - d.cwiseProduct(damping.center)) : q();
-  Eigen::VectorXd x;
   auto measure = [&] {
     x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
     out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
@@ -501,6 +507,15 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     return worst;
   };
   add_solution(shifted_q);
+  if (check == Check::from_solve) {
+    // w from the tangent's own x: w_A = 0 up to its round-off, and w off A as the solve left it.
+    out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
+    out.w_scale =
+        q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();
+    out.measured = false;
+    out.regular = true;
+    return out;
+  }
   double worst = measure();
   // Near a mechanism the tangent is ill-conditioned (K and the plastic part nearly cancel):
   // then one step of refinement on the LCP's own equations, its residual measured with K.

@@ -15,7 +15,7 @@
 /// equations report themselves singular, with the mechanism's multipliers as a Farkas
 /// certificate when the tangent's kernel gives one (else the caller goes back to the dense
 /// route). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
-/// independently of the tangent. An active set whose tangent differs from the factored one in
+/// independently of the tangent, unless the caller asks only for the tangent's own. An active set whose tangent differs from the factored one in
 /// a few groups is solved through that factor instead (Woodbury, see update_from_kept).
 #include <map>
 #include <optional>
@@ -101,8 +101,12 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   [[nodiscard]] bool symmetric() const override { return true; }
   using ActiveSetEquations::solve;
   /// The damping scales N_rr (it is added to N_AA: the tangent keeps K's pattern).
-  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active,
-                               const Damping& damping) override;
+  /// Check::from_solve takes w = q + N z - C x with the tangent's own x (no back-solve with K,
+  /// no refinement, and an update through the kept factor is not checked).
+  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active, const Damping& damping,
+                               Check check) override;
+  /// M_rr = N_rr - phi_r . K^-1 phi_r <= N_rr.
+  [[nodiscard]] double diagonal_bound(Eigen::Index row) const override { return n_diagonal_(row); }
   [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
 
   /// Numeric factorizations of the tangent so far, the solves that reused a factor as it was,
@@ -123,7 +127,8 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   /// solve(), through a low-rank update of the kept factor if `may_update`; nothing if that
   /// was not accurate enough.
   [[nodiscard]] std::optional<Solution> solve_on(const std::vector<Eigen::Index>& active,
-                                                 const Damping& damping, bool may_update);
+                                                 const Damping& damping, bool may_update,
+                                                 Check check);
   [[nodiscard]] Eigen::VectorXd strain(const std::vector<Eigen::Index>& active, const Local& l,
                                        const Eigen::VectorXd& x) const;
   /// K - Phi_A N_AA^-1 C_A (lower triangle), formed in TangentFactor::matrix.
@@ -141,6 +146,7 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   const SparseCholesky& k_;
   TangentFactor& tangent_;
   CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
+  Eigen::VectorXd n_diagonal_;
   TangentUpdateLimits limits_;
   int factorizations_ = 0;
   int reused_ = 0;
