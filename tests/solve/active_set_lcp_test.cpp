@@ -297,9 +297,7 @@ class HidingEquations final : public ActiveSetEquations {
   [[nodiscard]] Eigen::Index size() const override { return p_.q.size(); }
   [[nodiscard]] const VectorXd& q() const override { return p_.q; }
   [[nodiscard]] bool symmetric() const override { return true; }
-  [[nodiscard]] double diagonal_bound(Eigen::Index row) const override {
-    return p_.m(row, row);
-  }
+  [[nodiscard]] double diagonal_bound(Eigen::Index row) const override { return p_.m(row, row); }
   using ActiveSetEquations::solve;
   Solution solve(const std::vector<Eigen::Index>& active, const Damping& damping,
                  Check check) override {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 #include <bimrock/analysis/condensed_stiffness.hpp>
@@ -457,6 +458,18 @@ void update_state(const YieldSystem& sys, const Eigen::VectorXd& lambda, const E
   }
 }
 
+// Records a trial's last LCP and the rows active at its end (a failed trial: those it started
+// its last round from), however the trial ends.
+struct HintRecorder {
+  TrialHints* hints;  // null: nothing to record
+  const std::vector<int>& points;
+  const std::set<std::pair<int, int>>& active;
+  ~HintRecorder() {
+    if (hints)
+      hints->trials.push_back({points, {active.begin(), active.end()}});
+  }
+};
+
 // One increment from state s: `step` is the increment of the stage factor (load control) or of
 // the prescribed displacement (displacement control).
 Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step,
@@ -493,11 +506,22 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   // unloaded state (a stage's first) brings nearly every point within the margin.
   join_nearest(predicted_f, change_f, tol, opt.candidate_margin, kNearPerReached * reached,
                candidate);
-  clock.lap("increments: candidates");
-
   // The warm start: the rows that yielded in the last increment, then those of the last round
   // (a round adds only the points the last one violated: its solution is nearly this one's).
   std::set<std::pair<int, int>> warm_rows = solvers.last_active;
+  TrialHints* hints = opt.hints;
+  if (hints && hints->mode == TrialHints::Mode::replay && hints->next < hints->trials.size()) {
+    // The oracle: the recorded trial's last LCP and its final active rows.
+    const TrialHint& hint = hints->trials[hints->next++];
+    std::fill(candidate.begin(), candidate.end(), kNone);
+    for (int p : hint.points)
+      candidate[static_cast<std::size_t>(p)] = kRequired;
+    warm_rows = {hint.active.begin(), hint.active.end()};
+  }
+  clock.lap("increments: candidates");
+  std::vector<int> lcp_points;  // the last round's
+  const HintRecorder recorder{hints && hints->mode == TrialHints::Mode::record ? hints : nullptr,
+                              lcp_points, warm_rows};
   const auto held = [&](int p) {
     const YieldPoint& point = ctx.points[p];
     return solvers.condensed && solvers.condensed->covers(point.block_i) &&
@@ -527,6 +551,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     for (std::size_t p = 0; p < candidate.size(); ++p)
       if (required && in_lcp(static_cast<int>(p)))
         candidates.push_back(static_cast<int>(p));
+    lcp_points = candidates;
     const YieldSystem sys = assemble_yield_system(model, ctx.points, s.points, s.u, candidates);
     clock.lap("increments: yield rows");
     const int m = sys.size();
@@ -700,7 +725,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       if (lambda(r) != 0.0 || z(r) > 0.0)
         warm_rows.insert({sys.rows[r].point, sys.rows[r].mode});
     if (added == 0) {
-      solvers.last_active = std::move(warm_rows);
+      solvers.last_active = warm_rows;
       t.rows = sys.rows;
       t.lambda = lambda;
       t.status = Trial::Status::carried;
@@ -805,6 +830,20 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
   LcpSolvers solvers(k, lower);
+  if (opt.hints && opt.hints->mode == TrialHints::Mode::replay) {
+    // The oracle's one zone, condensed onto at the start: every block a recorded LCP touches.
+    ScopedTimer t(result.timings, "increments: condensation");
+    opt.hints->next = 0;
+    std::vector<char> touched(static_cast<std::size_t>(model.n_blocks()), 0);
+    for (const TrialHint& h : opt.hints->trials)
+      for (int p : h.points) {
+        if (p < 0 || static_cast<std::size_t>(p) >= result.points.size())
+          throw std::invalid_argument("plastic analysis: trial hints of another model");
+        flag_blocks(result.points[static_cast<std::size_t>(p)], touched);
+      }
+    if (std::find(touched.begin(), touched.end(), 1) != touched.end())
+      solvers.condense(model, touched, opt);
+  }
   const YieldEvaluator yield(model, result.points);
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <bimrock/analysis/timings.hpp>
+#include <bimrock/analysis/trial_hints.hpp>
 #include <bimrock/assembly/yield_system.hpp>
 
 namespace bimrock {
@@ -66,6 +67,9 @@ struct PlasticOptions {
   double region_fraction = 0.25;
   /// Record each phase's peak resident memory in the timings (benchmarks).
   bool track_memory = false;
+  /// Record each trial's last LCP and active rows here, or replay a record of the same model
+  /// (trial_hints.hpp: the oracle of `bimrock bench --oracle`; null: neither).
+  TrialHints* hints = nullptr;
 };
 
 /// The state the analysis carries from increment to increment.

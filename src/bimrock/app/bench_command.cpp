@@ -139,7 +139,7 @@ std::pair<int, int> plastic_zone(const Model& model, const std::vector<YieldPoin
           static_cast<int>(std::count(boundary.begin(), boundary.end(), 1))};
 }
 
-Run run_plastic(int n, int increments, const fs::path& scratch) {
+Run run_plastic(int n, int increments, const fs::path& scratch, TrialHints* hints) {
   Run run;
   release_free_memory();
   const double before = static_cast<double>(current_memory_bytes());
@@ -150,6 +150,7 @@ Run run_plastic(int n, int increments, const fs::path& scratch) {
   add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
   PlasticOptions options;
   options.track_memory = true;
+  options.hints = hints;
   double writing = 0.0;
   PlasticResult result;
   std::vector<YieldPoint> points;  // for the verbose lines only
@@ -212,10 +213,11 @@ struct Row {
   std::vector<std::pair<std::string, double>> median_seconds;
   std::map<std::string, double> peak_bytes;  // the largest over the repetitions
   double total = 0.0, limit = 0.0, run_peak = 0.0, limit_peak = 0.0;
+  double oracle = 0.0;  ///< median whole analysis of the oracle's replays (0: not run)
 };
 
 Row summarize(const std::string& model, const std::vector<Run>& runs) {
-  Row row{model, runs.front(), {}, {}, 0, 0, 0, 0};
+  Row row{model, runs.front(), {}, {}, 0, 0, 0, 0, 0};
   for (const auto& [phase, s0] : runs.front().seconds) {
     std::vector<double> v;
     for (const Run& r : runs)
@@ -263,10 +265,13 @@ void print_row(const Row& r) {
              mib(r.run_peak));
   fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "physical limit (K + CHOLMOD alone)", r.limit,
              mib(r.limit_peak));
+  if (r.oracle > 0.0)
+    fmt::print("  {:<34} {:>10.3f}\n", "oracle (each trial's LCP known)", r.oracle);
   fmt::print("  (RSS peak: the process's resident set in MiB; the last two rows: its growth)\n");
   // A growth under 1 MiB (the smallest models) is the allocator's noise: no memory ratio then.
-  fmt::print("  ratio to the limit: time {:.2f}, memory {}\n", r.total / r.limit,
-             mib(r.limit_peak) >= 1.0 ? fmt::format("{:.2f}", r.run_peak / r.limit_peak) : "-");
+  fmt::print("  ratio to the limit: time {:.2f}, memory {}{}\n", r.total / r.limit,
+             mib(r.limit_peak) >= 1.0 ? fmt::format("{:.2f}", r.run_peak / r.limit_peak) : "-",
+             r.oracle > 0.0 ? fmt::format(", oracle's time {:.2f}", r.oracle / r.limit) : "");
 }
 
 nlohmann::json to_json(const Row& r) {
@@ -295,8 +300,11 @@ nlohmann::json to_json(const Row& r) {
           {"time_ratio", r.total / r.limit},
           {"whole_peak_bytes", r.run_peak},
           {"limit_peak_bytes", r.limit_peak},
-          {"memory_ratio", mib(r.limit_peak) >= 1.0 ? nlohmann::json(r.run_peak / r.limit_peak)
-                                                    : nlohmann::json()}};
+          {"memory_ratio",
+           mib(r.limit_peak) >= 1.0 ? nlohmann::json(r.run_peak / r.limit_peak) : nlohmann::json()},
+          {"oracle_seconds", r.oracle > 0.0 ? nlohmann::json(r.oracle) : nlohmann::json()},
+          {"oracle_time_ratio",
+           r.oracle > 0.0 ? nlohmann::json(r.oracle / r.limit) : nlohmann::json()}};
 }
 
 void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
@@ -339,10 +347,21 @@ int run_bench(const BenchOptions& options) {
         model == "elastic" ? options.elastic_sizes : options.plastic_sizes;
     for (int n : sizes) {
       std::vector<Run> runs;
+      TrialHints hints;  // recorded by the first repetition, for the oracle
+      const bool oracle = options.oracle && model == "plastic";
       for (int rep = 0; rep < options.repetitions; ++rep)
         runs.push_back(model == "elastic" ? run_elastic(n, scratch)
-                                          : run_plastic(n, options.increments, scratch));
+                                          : run_plastic(n, options.increments, scratch,
+                                                        oracle && rep == 0 ? &hints : nullptr));
       rows.push_back(summarize(model, runs));
+      if (oracle) {
+        hints.mode = TrialHints::Mode::replay;
+        std::vector<double> totals;
+        for (int rep = 0; rep < options.repetitions; ++rep)
+          totals.push_back(
+              total_without_writing(run_plastic(n, options.increments, scratch, &hints)));
+        rows.back().oracle = median(totals);
+      }
       print_row(rows.back());
       std::fflush(stdout);
     }

@@ -106,6 +106,8 @@ int main(int argc, char** argv) {
       ->add_option("--increments", bench.increments, "increments of the abutment's loading stage")
       ->check(CLI::PositiveNumber);
   bench_cmd->add_option("--json", bench.json, "also write the table as JSON to this file");
+  bench_cmd->add_flag("--oracle", bench.oracle,
+                      "plastic models: also time a replay that knows each trial's LCP (a floor)");
   bench_cmd->add_option("--plot", bench.plot,
                         "write bench_time and bench_memory plots (PNG, SVG) to this folder");
 

@@ -474,8 +474,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
         for (Eigen::Index i = 0; i < n; ++i)
           if (clipped(i) != z(i))
             spread += (clipped(i) - z(i)) * std::sqrt(problem.diagonal_bound(i));
-        const double f =
-            objective(z, w, q) + w.dot(clipped - z) + 0.5 * spread * spread;
+        const double f = objective(z, w, q) + w.dot(clipped - z) + 0.5 * spread * spread;
         if (f < best_objective) {
           best_objective = f;
           best.z = clipped;

@@ -392,8 +392,7 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Ei
 }
 
 std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
-    const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update,
-    Check check) {
+    const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update, Check check) {
   const bool damped = damping.factor.size() > 0;
   const Eigen::Index m = size();
   const Eigen::Index n = lcp_.k_lower->rows();

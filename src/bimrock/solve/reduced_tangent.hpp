@@ -15,8 +15,9 @@
 /// equations report themselves singular, with the mechanism's multipliers as a Farkas
 /// certificate when the tangent's kernel gives one (else the caller goes back to the dense
 /// route). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
-/// independently of the tangent, unless the caller asks only for the tangent's own. An active set whose tangent differs from the factored one in
-/// a few groups is solved through that factor instead (Woodbury, see update_from_kept).
+/// independently of the tangent, unless the caller asks only for the tangent's own. An active set
+/// whose tangent differs from the factored one in a few groups is solved through that factor
+/// instead (Woodbury, see update_from_kept).
 #include <map>
 #include <optional>
 #include <utility>
