@@ -315,6 +315,7 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
   for (const std::string model : {"elastic", "plastic"}) {
     PlotSeries t{model + " analysis", {}, {}}, l{model + ": CHOLMOD alone", {}, {}};
     PlotSeries m{model + " analysis", {}, {}}, ml{model + ": CHOLMOD alone", {}, {}};
+    PlotSeries o{model + ": oracle (each LCP known)", {}, {}};
     for (const Row& r : rows) {
       if (r.model != model)
         continue;
@@ -324,10 +325,16 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
       l.y.push_back(r.limit);
       m.y.push_back(mib(r.run_peak));
       ml.y.push_back(mib(r.limit_peak));
+      if (r.oracle > 0.0) {
+        o.x.push_back(r.first.blocks);
+        o.y.push_back(r.oracle);
+      }
     }
     if (t.x.empty())
       continue;
     time.series.insert(time.series.end(), {t, l});
+    if (!o.x.empty())
+      time.series.push_back(o);
     memory.series.insert(memory.series.end(), {m, ml});
   }
   write_line_plot(time, folder / "bench_time");
