@@ -1,31 +1,50 @@
 #include <bimrock/io/vtk_writer.hpp>
 
+#include <algorithm>
 #include <array>
+#include <bit>
+#include <cstdint>
 #include <fstream>
 #include <functional>
 #include <stdexcept>
 
 #include <fmt/core.h>
 
+#include <bimrock/io/base64.hpp>
 #include <bimrock/io/text_file.hpp>
 
 namespace bimrock {
 
 namespace {
 
-// One cell array: `components` values per cell, from `value(cell, component)`.
-void data_array(std::ofstream& out, const std::string& name, int components, int cells,
+// VTK's inline binary format (format="binary"): Base64 of the array's size in bytes as the
+// file's header_type (UInt64), then Base64 of its values, encoded apart as VTK's own writer does.
+// The file says LittleEndian: the bytes are written as they are in memory. The 10^4-block bench
+// model's results: 2.9 s as decimal text, 1.4 s so (pictures included); 16.6 MB per step against
+// 13.6 MB (text writes the many zeros in two characters).
+static_assert(std::endian::native == std::endian::little, "VTU arrays are written little-endian");
+
+template <class T>
+void binary_array(std::ofstream& out, const std::string& attributes, const std::vector<T>& values) {
+  std::string line = "        <DataArray " + attributes + " format=\"binary\">";
+  const std::uint64_t bytes = values.size() * sizeof(T);
+  append_base64(line, &bytes, sizeof bytes);
+  append_base64(line, values.data(), bytes);
+  line += "</DataArray>\n";
+  out << line;
+}
+
+// One Float64 array: `components` values per item, from `value(item, component)`.
+void data_array(std::ofstream& out, const std::string& name, int components, int items,
                 const std::function<double(int, int)>& value) {
-  out << fmt::format(
-             R"(        <DataArray type="Float64" Name="{}" NumberOfComponents="{}" format="ascii">)",
-             name, components)
-      << '\n';
-  for (int c = 0; c < cells; ++c) {
+  std::vector<double> values;
+  values.reserve(static_cast<std::size_t>(items) * static_cast<std::size_t>(components));
+  for (int c = 0; c < items; ++c)
     for (int k = 0; k < components; ++k)
-      out << fmt::format("{} ", value(c, k));
-    out << '\n';
-  }
-  out << "        </DataArray>\n";
+      values.push_back(value(c, k));
+  binary_array(out,
+               fmt::format(R"(type="Float64" Name="{}" NumberOfComponents="{}")", name, components),
+               values);
 }
 
 int interface_state_code(const PlasticParts& plastic, int f) {
@@ -61,20 +80,20 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
   // Points: the corners of every block, then the two ends of every interface.
   std::vector<Vec2> points;
   std::vector<Vec2> moves;
-  std::vector<long> offsets;
+  std::vector<std::int64_t> offsets;
   for (int b = 0; b < nb; ++b) {
     for (const Vec2& v : model.blocks[static_cast<std::size_t>(b)].polygon.vertices) {
       points.push_back(v);
       moves.push_back(displacement_at(model, b, v, fields.u));
     }
-    offsets.push_back(static_cast<long>(points.size()));
+    offsets.push_back(static_cast<std::int64_t>(points.size()));
   }
   for (const Interface& f : model.interfaces) {
     for (const Vec2& v : {f.segment.a, f.segment.b}) {
       points.push_back(v);
       moves.push_back(displacement_at(model, f.block_i, v, fields.u));
     }
-    offsets.push_back(static_cast<long>(points.size()));
+    offsets.push_back(static_cast<std::int64_t>(points.size()));
   }
 
   std::ofstream out = open_for_writing(file);
@@ -83,23 +102,22 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
          "header_type=\"UInt64\">\n  <UnstructuredGrid>\n"
       << fmt::format("    <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n", points.size(),
                      cells)
-      << "      <Points>\n"
-         "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      << "      <Points>\n";
+  std::vector<double> xyz;
+  xyz.reserve(3 * points.size());
   for (const Vec2& p : points)
-    out << fmt::format("{} {} 0\n", p.x(), p.y());
-  out << "        </DataArray>\n      </Points>\n      <Cells>\n"
-         "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    xyz.insert(xyz.end(), {p.x(), p.y(), 0.0});
+  binary_array(out, R"(type="Float64" NumberOfComponents="3")", xyz);
+  out << "      </Points>\n      <Cells>\n";
+  std::vector<std::int64_t> connectivity(points.size());
   for (std::size_t k = 0; k < points.size(); ++k)
-    out << k << (k % 16 == 15 ? '\n' : ' ');
-  out << "\n        </DataArray>\n"
-         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-  for (long o : offsets)
-    out << o << ' ';
-  out << "\n        </DataArray>\n"
-         "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  for (int c = 0; c < cells; ++c)
-    out << (c < nb ? "7 " : "3 ");  // VTK_POLYGON, VTK_LINE
-  out << "\n        </DataArray>\n      </Cells>\n      <PointData Vectors=\"displacement\">\n";
+    connectivity[k] = static_cast<std::int64_t>(k);
+  binary_array(out, R"(type="Int64" Name="connectivity")", connectivity);
+  binary_array(out, R"(type="Int64" Name="offsets")", offsets);
+  std::vector<std::uint8_t> types(static_cast<std::size_t>(cells), 3);  // VTK_LINE
+  std::fill(types.begin(), types.begin() + nb, std::uint8_t{7});        // VTK_POLYGON
+  binary_array(out, R"(type="UInt8" Name="types")", types);
+  out << "      </Cells>\n      <PointData Vectors=\"displacement\">\n";
   data_array(out, "displacement", 3, static_cast<int>(moves.size()),
              [&](int p, int k) { return k < 2 ? moves[static_cast<std::size_t>(p)](k) : 0.0; });
   out << "      </PointData>\n      <CellData>\n";
