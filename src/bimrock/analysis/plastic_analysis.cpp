@@ -724,6 +724,16 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
     for (int r = 0; r < m; ++r)
       if (lambda(r) != 0.0 || z(r) > 0.0)
         warm_rows.insert({sys.rows[r].point, sys.rows[r].mode});
+    // And, where another round follows, the modes the check found violated: its first solve,
+    // from this round's active rows, would repeat this round's solution and find just these
+    // rows violated (w = -f), so they join at once (10^4 blocks: LCP 3.64 -> 3.35 s, one run
+    // each twice).
+    for (int p : violators) {
+      const auto values = f_next.of(static_cast<std::size_t>(p));
+      for (Eigen::Index k = 0; added > 0 && k < values.size(); ++k)
+        if (values(k) > tol)
+          warm_rows.insert({p, static_cast<int>(k)});
+    }
     if (added == 0) {
       solvers.last_active = warm_rows;
       t.rows = sys.rows;
