@@ -362,5 +362,45 @@ TEST(ActiveSetLcp, AWTheSolveDidNotMeasureIsNeverTakenAsTheResult) {
   }
 }
 
+TEST(ActiveSetLcp, AnInterruptStopsProjectedNewtonAtAMeasuredIterate) {
+  // Every iterate of projected Newton shown (interrupt_after 1): the first one shown has z >= 0
+  // and its w = M z + q (formed here), and the solve returns it as interrupted. An interrupt
+  // that never stops changes nothing: Lemke's solution.
+  ActiveSetOptions options;
+  options.stall_iterations = 0;
+  options.interrupt_after = 1;
+  int interrupted = 0;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    std::mt19937 rng(seed);
+    const LcpProblem p{testing::random_spd(60, rng), testing::random_vector(60, rng)};
+    const LcpResult lemke = Lemke().solve(p);
+    ASSERT_EQ(lemke.status, LcpStatus::solved);
+    int calls = 0;
+    VectorXd shown;
+    const ActiveSetLcp::Interrupt stop = [&](const LcpResult& iterate) {
+      ++calls;
+      shown = iterate.z;
+      EXPECT_GE(iterate.z.minCoeff(), 0.0);
+      const VectorXd w = p.m * iterate.z + p.q;
+      EXPECT_LE((iterate.w - w).cwiseAbs().maxCoeff(), 1e-12 * w.cwiseAbs().maxCoeff());
+      return true;
+    };
+    HidingEquations equations(p);
+    const LcpResult r = ActiveSetLcp(options).solve(equations, nullptr, &stop);
+    if (calls > 0) {
+      ++interrupted;
+      EXPECT_EQ(calls, 1);
+      EXPECT_EQ(r.status, LcpStatus::interrupted);
+      EXPECT_EQ(r.z, shown);
+    }
+    const ActiveSetLcp::Interrupt never = [](const LcpResult&) { return false; };
+    HidingEquations again(p);
+    const LcpResult solved = ActiveSetLcp(options).solve(again, nullptr, &never);
+    ASSERT_EQ(solved.status, LcpStatus::solved) << "seed " << seed;
+    EXPECT_LE((solved.z - lemke.z).cwiseAbs().maxCoeff(), 1e-9 * lemke.z.cwiseAbs().maxCoeff());
+  }
+  EXPECT_GE(interrupted, 1) << "projected Newton never took a step that was not a solution";
+}
+
 }  // namespace
 }  // namespace bimrock

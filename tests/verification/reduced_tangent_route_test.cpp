@@ -7,6 +7,7 @@
 // tangent wherever it applies (0): the carried stage factors, the monitor's displacement and the
 // collapse bracket must agree, and the tangent must have run and proven collapse steps itself
 // (a collapse proven on a tangent is a Farkas certificate checked with K, as the dense route's).
+// The same when rounds are ended early by an iterate that shows their LCP lacks points.
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
@@ -27,6 +28,21 @@ TEST(ReducedTangentRoute, GivesTheSameAnalysisAsTheDenseActiveBlock) {
   EXPECT_GT(factorizations, 0) << "the tangent route never ran";
   std::printf("dense route, then tangent route (%d tangent factorizations)\n", factorizations);
   testing::expect_same_analysis(dense, tangent);
+}
+
+TEST(ReducedTangentRoute, RoundsEndedByAnIterateGiveTheSameAnalysis) {
+  // Every iterate of projected Newton on the tangent is checked on every point
+  // (PlasticOptions::interrupt_after = 1), and one that violates points outside its LCP ends
+  // the round. That changes only which rounds run (the last round of every increment is solved
+  // and checked whole), so the analysis must be the same as on the dense active block; and
+  // rounds must have been ended so, or the test proves nothing.
+  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult interrupted =
+      testing::run_abutment({.reduced_tangent_rows = 0, .interrupt_after = 1});
+  EXPECT_GT(interrupted.interrupted_rounds, 0) << "no round was ended by an iterate";
+  EXPECT_EQ(dense.interrupted_rounds, 0);
+  std::printf("%d rounds ended by an iterate\n", interrupted.interrupted_rounds);
+  testing::expect_same_analysis(dense, interrupted);
 }
 
 }  // namespace

@@ -64,8 +64,11 @@ constexpr double kRegionGrowthLeast = 2.0;
 
 // The LCP solvers and what they keep from one increment to the next.
 struct LcpSolvers {
-  LcpSolvers(SparseCholesky& k_factor, const SparseMatrix& k_matrix)
-      : k(k_factor), k_lower(k_matrix), whole_k(k_factor, k_matrix) {}
+  LcpSolvers(SparseCholesky& k_factor, const SparseMatrix& k_matrix, const PlasticOptions& opt)
+      : k(k_factor),
+        k_lower(k_matrix),
+        whole_k(k_factor, k_matrix),
+        active_set(ActiveSetOptions{.interrupt_after = opt.interrupt_after}) {}
   SparseCholesky& k;  // K's factor: reordered when the region (or the zone) changes
   const SparseMatrix& k_lower;
   const CondensedStiffness whole_k;  // K itself: the base of a region, or of zones without one
@@ -88,6 +91,7 @@ struct LcpSolvers {
   int condensations = 0;
   int reserve_switches = 0;
   int regions = 0;
+  int interrupted_rounds = 0;
   int last_zone = 0;    // blocks of the last zone condensed onto first (not of its reserves)
   int last_region = 0;  // blocks of the last region
 
@@ -608,12 +612,52 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           split.group_rank.push_back(lcp.group_rank(i));
         }
         ReducedTangentEquations equations(split, condensed.factor(), *solvers.tangent);
-        r = solvers.active_set.solve(equations, warm_start);
+        // Near a collapse, projected Newton can take many steps on a round's LCP that lacks the
+        // points of the mechanism. After PlasticOptions::interrupt_after steps each iterate is
+        // checked on every point, and points outside the LCP that it violates end the round at
+        // once: the next round holds them. The last round is always solved and checked whole.
+        std::vector<int> outside;  // points outside the LCP that the iterate violates
+        YieldValues f_iterate;
+        const ActiveSetLcp::Interrupt interrupt = [&](const LcpResult& iterate) {
+          AnalysisState at = s;  // load control: the tangent route's
+          const Eigen::VectorXd lambda = iterate.z - gap_old;
+          at.u += step * ctx.x_ref + ctx.k.solve(Eigen::VectorXd(sys.phi * lambda));
+          update_state(sys, lambda, iterate.z, ctx.points, at);
+          std::vector<int> violators;
+          check_all_yield_functions(ctx, at, tol, violators, f_iterate);
+          outside.clear();
+          for (int p : violators)
+            if (!in_lcp(p))
+              outside.push_back(p);
+          return !outside.empty();
+        };
+        r = solvers.active_set.solve(equations, warm_start, &interrupt);
         t.active_set_iterations += r.steps;
         t.tangent_factorizations += equations.factorizations();
         if (std::getenv("BIMROCK_DEBUG_LCP") && r.status != LcpStatus::solved)
           std::fprintf(stderr, "reduced tangent m=%d: %s after %d, worst residual %g\n", m,
                        to_string(r.status), r.steps, r.residuals.worst_relative());
+        if (r.status == LcpStatus::interrupted) {
+          ++solvers.interrupted_rounds;
+          clock.lap("increments: LCP", "increments: K^-1 Phi columns",
+                    columns.seconds() - columns_before);
+          for (int p : outside)
+            candidate[static_cast<std::size_t>(p)] = kRequired;
+          join_nearest(f_iterate, Eigen::VectorXd(f_iterate.f - predicted_f.f), tol,
+                       opt.candidate_margin, kNearPerReached * outside.size(), candidate);
+          // The next round starts from the iterate's active rows and the modes it violates.
+          warm_rows.clear();
+          for (int i = 0; i < m; ++i)
+            if (r.z(i) > 0.0 || gap_old(i) > 0.0)
+              warm_rows.insert({sys.rows[i].point, sys.rows[i].mode});
+          for (int p : outside) {
+            const auto values = f_iterate.of(static_cast<std::size_t>(p));
+            for (Eigen::Index k = 0; k < values.size(); ++k)
+              if (values(k) > tol)
+                warm_rows.insert({p, static_cast<int>(k)});
+          }
+          continue;
+        }
       }
       if (tangent_route && m > opt.dense_fallback_rows && r.status != LcpStatus::solved &&
           r.status != LcpStatus::no_solution) {
@@ -814,6 +858,7 @@ PlasticResult with_solver_work(PlasticResult result, const SparseCholesky& k,
   result.condensations = solvers.condensations;
   result.reserve_switches = solvers.reserve_switches;
   result.regions = solvers.regions;
+  result.interrupted_rounds = solvers.interrupted_rounds;
   result.zone_blocks = solvers.condensed ? solvers.condensed->zone_blocks() : 0;
   return result;
 }
@@ -841,7 +886,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.points = make_yield_points(model);
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
-  LcpSolvers solvers(k, lower);
+  LcpSolvers solvers(k, lower, opt);
   if (opt.hints && opt.hints->mode == TrialHints::Mode::replay) {
     // The oracle's one zone, condensed onto at the start: every block a recorded LCP touches.
     ScopedTimer t(result.timings, "increments: condensation");

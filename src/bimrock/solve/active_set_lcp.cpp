@@ -245,7 +245,8 @@ constexpr double kSmallestDamping = 1e-6;
 // its rank, or a singular block that is no mechanism, is damped (a proximal step), which keeps
 // the descent. `at` is the start, z >= 0 measured by problem.result().
 LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& options,
-                           LcpResult at, int iteration, bool trace) {
+                           LcpResult at, int iteration, bool trace,
+                           const ActiveSetLcp::Interrupt* interrupt) {
   const Eigen::Index n = problem.size();
   const Eigen::VectorXd& q = problem.q();
   Eigen::VectorXd z = at.z;
@@ -327,6 +328,11 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
       at.status = LcpStatus::numerical_failure;
       return at;
     }
+    if (interrupt != nullptr && options.interrupt_after > 0 && k + 1 >= options.interrupt_after &&
+        at.residuals.worst_relative() > options.accuracy && (*interrupt)(at)) {
+      at.status = LcpStatus::interrupted;
+      return at;
+    }
   }
   at.status = at.residuals.worst_relative() <= options.accuracy ? LcpStatus::solved
                                                                 : LcpStatus::iteration_limit;
@@ -346,7 +352,8 @@ LcpResult ActiveSetLcp::solve(LcpColumns& problem, const Eigen::VectorXd* warm_s
   return solve(equations, warm_start);
 }
 
-LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd* warm_start) {
+LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd* warm_start,
+                              const Interrupt* interrupt) {
   const Eigen::Index n = problem.size();
   const Eigen::VectorXd& q = problem.q();
   if ((q.array() >= 0.0).all())
@@ -412,7 +419,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       return solved_or(status, iteration);
     if (!best_measured)
       best = problem.result(LcpStatus::solved, best.z, iteration);
-    return projected_newton(problem, options_, best, iteration, trace);
+    return projected_newton(problem, options_, best, iteration, trace, interrupt);
   };
   Eigen::Index fewest_violated = n + 1;  // the best count of violated rows so far
   int stalled = 0;                       // iterations since it was last lowered

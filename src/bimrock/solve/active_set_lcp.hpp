@@ -21,6 +21,7 @@
 /// and a proximal damping of singular blocks): it cannot cycle. A non-symmetric M goes on with
 /// Murty's rule after a cycle. Otherwise it answers solved, or iteration_limit /
 /// numerical_failure (a result that fails the check): the caller then falls back to Lemke.
+#include <functional>
 #include <limits>
 #include <utility>
 
@@ -43,6 +44,9 @@ struct ActiveSetOptions {
   int stall_iterations = 1;
   /// The result must satisfy LcpResiduals::worst_relative() <= accuracy.
   double accuracy = 1e-9;
+  /// Projected Newton steps after which each iterate is shown to the caller's Interrupt (0:
+  /// never).
+  int interrupt_after = 8;
   /// The active block is singular when the reciprocal condition estimate of its LU is below
   /// this (a mechanism, or a degenerate active set): left to Lemke.
   double singular_tolerance = 1e-13;
@@ -105,6 +109,11 @@ class ActiveSetEquations {
 
 class ActiveSetLcp final : public LcpSolver {
  public:
+  /// Asked with each measured iterate of projected Newton from its interrupt_after-th step on
+  /// (z >= 0, its w and residuals): true stops the solve, with LcpStatus::interrupted and that
+  /// iterate. A caller that can learn from an iterate that its problem is incomplete (an
+  /// increment's LCP lacking candidates) need not wait for a long solve to end.
+  using Interrupt = std::function<bool(const LcpResult&)>;
   explicit ActiveSetLcp(ActiveSetOptions options = {}) : options_(std::move(options)) {}
   [[nodiscard]] std::string name() const override { return "active-set"; }
   /// @param warm_start a guess of z: its positive entries are the first active set (else the
@@ -117,7 +126,8 @@ class ActiveSetLcp final : public LcpSolver {
   [[nodiscard]] LcpResult solve(LcpColumns& problem, const Eigen::VectorXd* warm_start = nullptr);
   /// The iteration on any representation of the active-set equations.
   [[nodiscard]] LcpResult solve(ActiveSetEquations& problem,
-                                const Eigen::VectorXd* warm_start = nullptr);
+                                const Eigen::VectorXd* warm_start = nullptr,
+                                const Interrupt* interrupt = nullptr);
 
  private:
   ActiveSetOptions options_;

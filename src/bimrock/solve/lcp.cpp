@@ -30,6 +30,8 @@ const char* to_string(LcpStatus status) {
       return "iteration limit";
     case LcpStatus::numerical_failure:
       return "numerical failure";
+    case LcpStatus::interrupted:
+      return "interrupted";
   }
   return "?";
 }

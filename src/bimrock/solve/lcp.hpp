@@ -26,6 +26,7 @@ enum class LcpStatus {
   no_solution,        ///< the method proved (or, for some M, concluded) that none exists: collapse
   iteration_limit,    ///< gave up: the pivot or iteration budget ran out
   numerical_failure,  ///< round-off spoiled the result; not a collapse (cut the increment)
+  interrupted,        ///< stopped at the caller's request (ActiveSetLcp::Interrupt): no result
 };
 
 [[nodiscard]] const char* to_string(LcpStatus status);
