@@ -85,6 +85,63 @@ TEST(SparseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   }
 }
 
+// One analysis, many factorizations: from the second on, the matrix is put in the factor's
+// order by the class itself (CHOLMOD is told the order is natural), which must give the same
+// factor. Each factor's solution is checked by its residual (K x = b), for K's own order and
+// for a zone ordered last (then also its Schur complement against the dense one); a matrix
+// that is not positive definite is still refused at its own column, and one of another
+// pattern is refused outright.
+TEST(SparseCholesky, RefactorizesOnePatternWithNewValues) {
+  constexpr int kSide = 20;
+  std::vector<char> last(kSide * kSide, 0);
+  for (int y = 7; y < 13; ++y)
+    for (int x = 8; x < 12; ++x)
+      last[y * kSide + x] = 1;
+  for (const bool zone_last : {false, true}) {
+    SparseCholesky chol;
+    const CholmodMatrix first = grid(kSide, 1);
+    if (zone_last)
+      chol.analyze_last(first, 6, last);
+    else
+      chol.analyze(first, 6);
+    ASSERT_TRUE(chol.supernodal());
+    std::mt19937 rng(3);
+    for (unsigned seed : {1U, 2U, 3U, 4U}) {
+      const CholmodMatrix lower = grid(kSide, seed);
+      ASSERT_TRUE(chol.factorize(lower)) << seed;
+      const Eigen::VectorXd b = testing::random_vector(lower.rows(), rng);
+      const Eigen::VectorXd x = chol.solve(b);
+      const Eigen::VectorXd residual = lower.selfadjointView<Eigen::Lower>() * x - b;
+      EXPECT_LE(residual.norm(), 1e-12 * lower.norm() * x.norm())
+          << "seed " << seed << (zone_last ? ", zone last" : ", K's order");
+    }
+    if (zone_last) {  // the factor of the last values, read as a Schur complement
+      const CholmodMatrix lower = grid(kSide, 4);
+      const Eigen::MatrixXd k = Eigen::MatrixXd(lower).selfadjointView<Eigen::Lower>();
+      const Eigen::MatrixXd s =
+          Eigen::MatrixXd(chol.schur_complement(lower)).selfadjointView<Eigen::Lower>();
+      const std::vector<std::int64_t> p = chol.trailing_unknowns();
+      std::vector<std::int64_t> e;
+      for (std::int64_t i = 0; i < lower.rows(); ++i)
+        if (!last[static_cast<std::size_t>(i / 6)])
+          e.push_back(i);
+      const Eigen::MatrixXd expected =
+          Eigen::MatrixXd(k(p, p)) -
+          k(p, e) * Eigen::MatrixXd(k(e, e)).llt().solve(Eigen::MatrixXd(k(e, p)));
+      EXPECT_LE((s - expected).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff());
+    }
+    CholmodMatrix indefinite = grid(kSide, 5);
+    const std::int64_t column = 6 * (10 * kSide + 10) + 2;  // inside the zone
+    indefinite.coeffRef(column, column) = -1.0;
+    EXPECT_FALSE(chol.factorize(indefinite));
+    EXPECT_EQ(chol.failed_column(), column);
+    CholmodMatrix other = grid(kSide, 5);
+    other.coeffRef(6 * 40 + 5, 0) = 1e-3;  // an entry the analyzed pattern lacks
+    other.makeCompressed();
+    EXPECT_THROW((void)chol.factorize(other), std::logic_error);
+  }
+}
+
 // The Schur complement onto the blocks ordered last, read from the factor, against the dense
 // K_PP - K_PE K_EE^-1 K_EP (a second method: Eigen's dense Cholesky of K_EE). Zones: a patch
 // inside the grid (coupled to the rest on all sides), a corner, scattered blocks, every block.

@@ -47,6 +47,17 @@ cholmod_dense view(const Eigen::MatrixXd& b) {
 struct SparseCholesky::Impl {
   cholmod_common common{};
   cholmod_factor* factor = nullptr;
+  // A supernodal factor in a fill-reducing order takes tril(P A P^T); from a lower triangle
+  // CHOLMOD builds it with two transposes per factorization (cholmod_factorize_p), 14% of
+  // the factorizations' time in the plastic bench (docs/performance.md, session 16). From the
+  // second factorization of one analysis on, the matrix is scattered into that form here, in
+  // one pass, and factorized as if its order were natural.
+  std::int64_t factorizations_since_analysis = 0;
+  std::vector<std::int64_t> permuted_p;  // tril(P A P^T): column starts, rows, values
+  std::vector<std::int64_t> permuted_i;
+  std::vector<double> permuted_x;
+  std::vector<std::int64_t> scatter;  // entry k of the caller's lower -> permuted_x (-1: above)
+  std::uint64_t caller_pattern = 0;   // its checksum: another one is refused (CHOLMOD's is not)
 
   Impl() {
     cholmod_l_start(&common);
@@ -118,6 +129,19 @@ std::uint64_t fingerprint(const CholmodMatrix& pattern) {
   return h;
 }
 
+// A checksum of a pattern (sums of its indices weighted by position, which vectorize, unlike
+// fingerprint()): it tells the analyzed pattern from another passed by mistake, which CHOLMOD
+// would factorize without notice.
+std::uint64_t pattern_checksum(const CholmodMatrix& a) {
+  std::uint64_t sum = static_cast<std::uint64_t>(a.rows());
+  for (std::int64_t c = 0; c <= a.cols(); ++c)
+    sum += static_cast<std::uint64_t>(a.outerIndexPtr()[c]) * static_cast<std::uint64_t>(c + 1);
+  std::uint64_t rows = 0;
+  for (std::int64_t k = 0; k < a.nonZeros(); ++k)
+    rows += static_cast<std::uint64_t>(a.innerIndexPtr()[k]) * static_cast<std::uint64_t>(k + 1);
+  return sum ^ (rows * 0x9E3779B97F4A7C15ULL);
+}
+
 // The permutation of the unknowns that orders whole blocks of block_size as `coarse` does.
 std::vector<std::int64_t> expand_blocks(const std::vector<std::int64_t>& coarse, int block_size) {
   std::vector<std::int64_t> perm(coarse.size() * static_cast<std::size_t>(block_size));
@@ -155,6 +179,11 @@ void SparseCholesky::analyze_given(const CholmodMatrix& lower, const std::int64_
 void SparseCholesky::finish_analysis(const CholmodMatrix& lower) {
   if (!impl_->factor)
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
+  impl_->factorizations_since_analysis = 0;
+  impl_->scatter.clear();
+  impl_->permuted_p.clear();
+  impl_->permuted_i.clear();
+  impl_->permuted_x.clear();
   n_ = lower.rows();
   analyzed_nonzeros_ = lower.nonZeros();
   factor_flops_ = impl_->common.fl;
@@ -327,12 +356,88 @@ CholmodMatrix SparseCholesky::schur_complement(const CholmodMatrix& lower, int l
   return s;
 }
 
+void SparseCholesky::permute_into_factor_order(const CholmodMatrix& lower) {
+  Impl& m = *impl_;
+  const auto* perm = static_cast<const std::int64_t*>(m.factor->Perm);
+  const std::int64_t* outer = lower.outerIndexPtr();
+  const std::int64_t* inner = lower.innerIndexPtr();
+  const auto nnz = static_cast<std::size_t>(lower.nonZeros());
+  const auto n = static_cast<std::size_t>(n_);
+  std::vector<std::int64_t> inverse(n);
+  for (std::int64_t k = 0; k < n_; ++k)
+    inverse[static_cast<std::size_t>(perm[k])] = k;
+  // Each entry's row and column in the factor's order (the lower triangle: row >= column);
+  // entries above the diagonal are not read, as CHOLMOD reads a lower triangle (stype -1).
+  std::vector<std::int64_t> row(nnz, -1);
+  std::vector<std::int64_t> column(nnz, -1);
+  std::vector<std::int64_t> row_start(n + 1, 0);
+  m.permuted_p.assign(n + 1, 0);
+  for (std::int64_t j = 0; j < n_; ++j)
+    for (std::int64_t k = outer[j]; k < outer[j + 1]; ++k) {
+      if (inner[k] < j)
+        continue;
+      const std::int64_t a = inverse[static_cast<std::size_t>(inner[k])];
+      const std::int64_t b = inverse[static_cast<std::size_t>(j)];
+      row[static_cast<std::size_t>(k)] = std::max(a, b);
+      column[static_cast<std::size_t>(k)] = std::min(a, b);
+      ++row_start[static_cast<std::size_t>(std::max(a, b) + 1)];
+      ++m.permuted_p[static_cast<std::size_t>(std::min(a, b) + 1)];
+    }
+  for (std::size_t r = 0; r < n; ++r) {
+    row_start[r + 1] += row_start[r];
+    m.permuted_p[r + 1] += m.permuted_p[r];
+  }
+  // A counting sort by row, then a stable one by column: each column's rows ascend.
+  const auto kept = static_cast<std::size_t>(m.permuted_p[n]);
+  std::vector<std::int64_t> by_row(kept);
+  for (std::size_t k = 0; k < nnz; ++k)
+    if (row[k] >= 0)
+      by_row[static_cast<std::size_t>(row_start[static_cast<std::size_t>(row[k])]++)] =
+          static_cast<std::int64_t>(k);
+  std::vector<std::int64_t> next(m.permuted_p.begin(), m.permuted_p.end() - 1);
+  m.scatter.assign(nnz, -1);
+  m.permuted_i.assign(kept, 0);
+  m.permuted_x.assign(kept, 0.0);
+  for (std::int64_t k : by_row) {
+    const auto at = next[static_cast<std::size_t>(column[static_cast<std::size_t>(k)])]++;
+    m.permuted_i[static_cast<std::size_t>(at)] = row[static_cast<std::size_t>(k)];
+    m.scatter[static_cast<std::size_t>(k)] = at;
+  }
+  m.caller_pattern = pattern_checksum(lower);
+}
+
 bool SparseCholesky::factorize(const CholmodMatrix& lower) {
   if (!impl_->factor)
     analyze(lower);
-  cholmod_sparse a = view(lower);
+  Impl& m = *impl_;
   const auto start = std::chrono::steady_clock::now();
+  // From the second factorization of a supernodal analysis: the matrix in the factor's order,
+  // factorized as natural (no transposes; see Impl).
+  const bool permute = m.factor->is_super && m.factor->Perm && lower.isCompressed() &&
+                       ++m.factorizations_since_analysis >= 2;
+  if (permute) {
+    if (m.scatter.empty())
+      permute_into_factor_order(lower);
+    if (lower.nonZeros() != static_cast<std::int64_t>(m.scatter.size()) ||
+        pattern_checksum(lower) != m.caller_pattern)
+      throw std::logic_error("SparseCholesky::factorize: a pattern that was not analyzed");
+    const double* x = lower.valuePtr();
+    for (std::size_t k = 0; k < m.scatter.size(); ++k)
+      if (m.scatter[k] >= 0)
+        m.permuted_x[static_cast<std::size_t>(m.scatter[k])] = x[k];
+  }
+  cholmod_sparse a = view(lower);
+  if (permute) {
+    a.p = m.permuted_p.data();
+    a.i = m.permuted_i.data();
+    a.x = m.permuted_x.data();
+    a.nzmax = m.permuted_x.size();
+  }
+  const int ordering = m.factor->ordering;
+  if (permute)
+    m.factor->ordering = CHOLMOD_NATURAL;
   cholmod_l_factorize(&a, impl_->factor, &impl_->common);
+  m.factor->ordering = ordering;
   ++work_.factorizations;
   work_.factorize_seconds += seconds_since(start);
   if (impl_->common.status == CHOLMOD_OUT_OF_MEMORY)

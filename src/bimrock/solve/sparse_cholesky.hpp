@@ -92,6 +92,8 @@ class SparseCholesky {
   /// The fill-reducing order of a block graph (CHOLMOD's default strategy), kept for the last
   /// pattern it was computed for.
   const std::vector<std::int64_t>& block_order(const CholmodMatrix& pattern);
+  /// The scatter of `lower`'s entries into tril(P lower P^T), P the factor's order (see Impl).
+  void permute_into_factor_order(const CholmodMatrix& lower);
   /// solve(b) for a b whose first `first` entries in the factor's order are zero.
   [[nodiscard]] Eigen::VectorXd solve_from(const Eigen::VectorXd& b, std::int64_t first) const;
 
