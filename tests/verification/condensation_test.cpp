@@ -24,14 +24,17 @@ namespace {
 constexpr PlasticOptions kWhole{.condensed_zone_fraction = 0.0};
 constexpr PlasticOptions kCondensed{.condensed_zone_fraction = 1.0,
                                     .least_zone_blocks = 1,
+                                    .condense_after_blocks = 0,
                                     .zone_reserves = 0,
                                     .region_growth = 0.0};
 constexpr PlasticOptions kReserves{.condensed_zone_fraction = 1.0,
                                    .least_zone_blocks = 1,
+                                   .condense_after_blocks = 0,
                                    .zone_reserves = 2,
                                    .region_growth = 0.0};
 constexpr PlasticOptions kRegions{.condensed_zone_fraction = 1.0,
                                   .least_zone_blocks = 1,
+                                  .condense_after_blocks = 0,
                                   .zone_reserves = 2,
                                   .region_growth = 3.0,
                                   .region_fraction = 1.0};
@@ -65,6 +68,25 @@ TEST(Condensation, GivesTheSameAnalysisAsTheWholeStiffness) {
     expect_condensed(condensed, static_cast<int>(whole.state.u.size() / 6), opt);
     testing::expect_same_analysis(whole, condensed);
   }
+}
+
+// Until the candidates touch more than PlasticOptions::condense_after_blocks blocks, the LCPs
+// are solved on K itself: the same analysis whether that is never (more blocks than the
+// model has: K is never condensed) or for the first increments only (the default), after
+// which K is condensed as before.
+TEST(Condensation, KItselfUntilManyBlocksAreNeededGivesTheSameAnalysis) {
+  const PlasticResult whole = testing::run_abutment(kWhole);
+  PlasticOptions never = kReserves;
+  never.condense_after_blocks = 1'000'000;
+  const PlasticResult uncondensed = testing::run_abutment(never);
+  EXPECT_EQ(uncondensed.condensations, 0);
+  testing::expect_same_analysis(whole, uncondensed);
+  PlasticOptions later = kReserves;
+  later.condense_after_blocks = PlasticOptions{}.condense_after_blocks;
+  const PlasticResult condensed = testing::run_abutment(later);
+  EXPECT_GE(condensed.condensations, 1);
+  EXPECT_LT(condensed.condensations, testing::run_abutment(kReserves).condensations);
+  testing::expect_same_analysis(whole, condensed);
 }
 
 TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {

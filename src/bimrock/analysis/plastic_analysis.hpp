@@ -58,6 +58,10 @@ struct PlasticOptions {
   /// condense, 1: always). The zone has at least least_zone_blocks blocks.
   double condensed_zone_fraction = 0.5;
   int least_zone_blocks = 200;
+  /// K is condensed only once the required candidates of a round touch more than this many
+  /// blocks: before, the LCPs are solved on K itself, whose few columns K^-1 phi cost less
+  /// than factorizing K in a new order (0: condense from the first LCP).
+  int condense_after_blocks = 16;
   /// K's order for a zone also makes room for this many reserve zones around it (nested, each
   /// rings of blocks larger): a zone outgrown is replaced by a reserve that holds what is
   /// needed without factorizing K again (0: none).
