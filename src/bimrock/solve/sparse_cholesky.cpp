@@ -48,10 +48,10 @@ struct SparseCholesky::Impl {
   cholmod_common common{};
   cholmod_factor* factor = nullptr;
   // A supernodal factor in a fill-reducing order takes tril(P A P^T); from a lower triangle
-  // CHOLMOD builds it with two transposes per factorization (cholmod_factorize_p), 14% of
-  // the factorizations' time in the plastic bench (docs/performance.md, session 16). From the
-  // second factorization of one analysis on, the matrix is scattered into that form here, in
-  // one pass, and factorized as if its order were natural.
+  // CHOLMOD builds it with two transposes per factorization (cholmod_factorize_p), 14% of the
+  // factorizations' main-thread time in the plastic bench (docs/performance.md, session 16).
+  // From the second factorization of one analysis on, the matrix is scattered into that form
+  // here, in one pass, and factorized as if its order were natural.
   std::int64_t factorizations_since_analysis = 0;
   std::vector<std::int64_t> permuted_p;  // tril(P A P^T): column starts, rows, values
   std::vector<std::int64_t> permuted_i;
