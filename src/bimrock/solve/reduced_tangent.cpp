@@ -68,6 +68,29 @@ Eigen::VectorXd ReducedTangentEquations::strain(const std::vector<Eigen::Index>&
   return out;
 }
 
+void ReducedTangentEquations::residual(const Eigen::VectorXd& z, const Eigen::VectorXd& x,
+                                       Eigen::VectorXd& w, Eigen::VectorXd& scale) const {
+  const Eigen::Index m = size();
+  w.resize(m);
+  scale.resize(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    double wi = lcp_.q(i);
+    double si = std::abs(wi);
+    for (CholmodMatrix::InnerIterator e(n_transposed_, i); e; ++e) {
+      const double term = e.value() * z(e.row());
+      wi += term;
+      si += std::abs(term);
+    }
+    for (CholmodMatrix::InnerIterator e(c_transposed_, i); e; ++e) {
+      const double term = e.value() * x(e.row());
+      wi -= term;
+      si += std::abs(term);
+    }
+    w(i) = wi;
+    scale(i) = si;
+  }
+}
+
 Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
                                                    const std::vector<Eigen::Index>& active,
                                                    const std::vector<Local>& locals) {
@@ -123,6 +146,7 @@ ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const Spar
       k_(k),
       tangent_(tangent),
       c_transposed_(lcp.c->transpose()),
+      n_transposed_(lcp.n->transpose()),
       n_diagonal_(lcp.n->diagonal()),
       limits_(limits) {}
 
@@ -490,9 +514,7 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
       damped ? Eigen::VectorXd(q() - d.cwiseProduct(damping.center)) : q();
   auto measure = [&] {
     x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
-    out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
-    out.w_scale =
-        q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();
+    residual(out.z, x, out.w, out.w_scale);
     double worst = 0.0;
     for (Eigen::Index i : active) {
       const double residual = out.w(i) + d(i) * (out.z(i) - (damped ? damping.center(i) : 0.0));
@@ -508,9 +530,7 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
   add_solution(shifted_q);
   if (check == Check::from_solve) {
     // w from the tangent's own x: w_A = 0 up to its round-off, and w off A as the solve left it.
-    out.w = q() + *lcp_.n * out.z - *lcp_.c * x;
-    out.w_scale =
-        q().cwiseAbs() + lcp_.n->cwiseAbs() * out.z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();
+    residual(out.z, x, out.w, out.w_scale);
     out.measured = false;
     out.regular = true;
     return out;
@@ -535,9 +555,8 @@ LcpResult ReducedTangentEquations::result(LcpStatus status, Eigen::VectorXd z, i
   const Eigen::VectorXd x = z.size() > 0 && z.cwiseAbs().maxCoeff() > 0.0
                                 ? k_.solve(Eigen::VectorXd(*lcp_.phi * z))
                                 : Eigen::VectorXd::Zero(lcp_.k_lower->rows());
-  r.w = q() + *lcp_.n * z - *lcp_.c * x;
-  const Eigen::VectorXd sizes =
-      q().cwiseAbs() + lcp_.n->cwiseAbs() * z.cwiseAbs() + lcp_.c->cwiseAbs() * x.cwiseAbs();
+  Eigen::VectorXd sizes;
+  residual(z, x, r.w, sizes);
   r.residuals = measure(z, r.w, sizes);
   r.z = std::move(z);
   r.steps = steps;

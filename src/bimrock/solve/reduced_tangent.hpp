@@ -146,7 +146,12 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   const SplitLcp& lcp_;
   const SparseCholesky& k_;
   TangentFactor& tangent_;
+  /// w = q + N z - C x and its scale |q| + |N| |z| + |C| |x|, row by row in one pass.
+  void residual(const Eigen::VectorXd& z, const Eigen::VectorXd& x, Eigen::VectorXd& w,
+                Eigen::VectorXd& scale) const;
+
   CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
+  CholmodMatrix n_transposed_;  // m x m: the rows of N as columns
   Eigen::VectorXd n_diagonal_;
   TangentUpdateLimits limits_;
   int factorizations_ = 0;
