@@ -1,7 +1,6 @@
 #include <bimrock/analysis/condensed_stiffness.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 #include <numeric>
 #include <stdexcept>
@@ -96,71 +95,23 @@ Eigen::VectorXd CondensedStiffness::local(const Eigen::VectorXd& v) const {
 std::vector<char> grow_zone(const Model& model, std::vector<char> zone, int target,
                             const std::vector<char>* within) {
   const std::vector<std::vector<int>> next_to = neighbours(model);
-  const auto allowed = [&](int b) {
-    return !zone[static_cast<std::size_t>(b)] &&
-           (!within || (*within)[static_cast<std::size_t>(b)]);
-  };
-  // Rings of neighbours around `ring` (the blocks added last) until `count` reaches `until`.
-  const auto grow = [&](std::vector<int> ring, int count, int until) {
-    while (count < until && !ring.empty()) {
-      std::vector<int> next;
-      for (int b : ring)
-        for (int n : next_to[static_cast<std::size_t>(b)])
-          if (allowed(n)) {
-            zone[static_cast<std::size_t>(n)] = 1;
-            next.push_back(n);
-          }
-      count += static_cast<int>(next.size());
-      ring = std::move(next);
-    }
-    return count;
-  };
-  std::vector<int> flagged;
+  std::vector<int> ring;
   for (int b = 0; b < model.n_blocks(); ++b)
     if (zone[static_cast<std::size_t>(b)])
-      flagged.push_back(b);
-  const auto total = static_cast<int>(flagged.size());
-  if (total >= target || total == 0)
-    return zone;
-  // Islands of flagged blocks (two are one where a single block separates them), each grown to
-  // its share of the target: a few blocks far from the rest (a corner that yields under
-  // gravity) take a few rings, not as many as the plastic zone, whose growth they would halve.
-  std::vector<int> island(static_cast<std::size_t>(model.n_blocks()), -1);
-  std::vector<std::vector<int>> islands;
-  for (int seed : flagged) {
-    if (island[static_cast<std::size_t>(seed)] >= 0)
-      continue;
-    const auto id = static_cast<int>(islands.size());
-    islands.push_back({seed});
-    island[static_cast<std::size_t>(seed)] = id;
-    for (std::size_t k = 0; k < islands.back().size(); ++k) {
-      const int b = islands.back()[k];
+      ring.push_back(b);
+  auto count = static_cast<int>(ring.size());
+  while (count < target && !ring.empty()) {
+    std::vector<int> next;
+    for (int b : ring)
       for (int n : next_to[static_cast<std::size_t>(b)]) {
-        std::vector<int> near{n};
-        near.insert(near.end(), next_to[static_cast<std::size_t>(n)].begin(),
-                    next_to[static_cast<std::size_t>(n)].end());
-        for (int c : near)
-          if (zone[static_cast<std::size_t>(c)] && island[static_cast<std::size_t>(c)] < 0) {
-            island[static_cast<std::size_t>(c)] = id;
-            islands.back().push_back(c);
-          }
+        const auto i = static_cast<std::size_t>(n);
+        if (!zone[i] && (!within || (*within)[i])) {
+          zone[i] = 1;
+          next.push_back(n);
+        }
       }
-    }
-  }
-  int count = total;
-  for (const std::vector<int>& blocks : islands) {
-    const auto own = static_cast<int>(blocks.size());
-    const auto share =
-        static_cast<int>(std::ceil(static_cast<double>(target) * static_cast<double>(own) / total));
-    count += grow(blocks, own, share) - own;
-  }
-  // Islands that could not take their share (`within`): the rest around the whole zone.
-  if (count < target) {
-    std::vector<int> ring;
-    for (int b = 0; b < model.n_blocks(); ++b)
-      if (zone[static_cast<std::size_t>(b)])
-        ring.push_back(b);
-    grow(std::move(ring), count, target);
+    count += static_cast<int>(next.size());
+    ring = std::move(next);
   }
   return zone;
 }

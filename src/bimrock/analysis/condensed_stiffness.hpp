@@ -75,10 +75,8 @@ class CondensedStiffness {
 };
 
 /// The blocks of `needed` and rings of their neighbours (blocks that share an interface), ring
-/// by ring, until at least `target` blocks are flagged or no block is left to add. Each island
-/// of `needed` (blocks at most one block apart) grows to its share of `target`, in proportion
-/// to its blocks; what an island cannot take is grown around the whole zone. With `within`,
-/// only blocks it flags are added.
+/// by ring, until at least `target` blocks are flagged or no block is left to add. With
+/// `within`, only blocks it flags are added.
 std::vector<char> grow_zone(const Model& model, std::vector<char> needed, int target,
                             const std::vector<char>* within = nullptr);
 
