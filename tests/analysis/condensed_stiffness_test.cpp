@@ -1,7 +1,7 @@
-// The zones K is condensed onto (grow_zone): rings of neighbours around the flagged blocks, each
-// island of them grown to its share of the target. The expected counts are those of rings on a
-// grid of square blocks, where a block's neighbours are the four that share an edge with it: the
-// blocks at grid distance k from one block are 4k, and from a 3 x 3 square 12 + 4 (k - 1).
+// The zones K is condensed onto (grow_zone): rings of neighbours around the flagged blocks until
+// the target. The expected counts are those of rings on a grid of square blocks, where a block's
+// neighbours are the four that share an edge with it: the blocks at grid distance k from one
+// block are 4k, and from a 3 x 3 square 12 + 4 (k - 1).
 #include <cmath>
 #include <cstdlib>
 #include <vector>
@@ -16,7 +16,7 @@
 namespace bimrock {
 namespace {
 
-constexpr int kSide = 30;
+constexpr int kSide = 40;
 
 Model grid() {
   CaseSpec c;
@@ -49,17 +49,14 @@ int near(const Model& m, const std::vector<char>& zone, int x, int y, int reach)
   return count;
 }
 
-// One block near a corner and a 3 x 3 square in the middle: 1 and 9 of 10 flagged blocks, so
-// shares of 20 and 180 of a target of 200. The single block takes rings until it has 20
-// (1 + 4 + 8 + 12 = 25), the square until it has 180 (9 + 12 + 16 + ... + 40 = 217). Grown
-// together ring by ring, as zones were before, the single block would have taken 6 rings (85
-// blocks) for the square's 141.
-TEST(GrowZone, EachIslandGrowsToItsShareOfTheTarget) {
+// One block and a 3 x 3 square far apart, grown together ring by ring to a target of 200:
+// after 5 rings 61 + 109 = 170 blocks, after 6 rings 85 + 141 = 226.
+TEST(GrowZone, RingsAroundEveryFlaggedBlockUntilTheTarget) {
   const Model m = grid();
   std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
-  zone[static_cast<std::size_t>(at(m, 3, 3))] = 1;
-  for (int y = 14; y <= 16; ++y)
-    for (int x = 14; x <= 16; ++x)
+  zone[static_cast<std::size_t>(at(m, 7, 7))] = 1;
+  for (int y = 24; y <= 26; ++y)
+    for (int x = 24; x <= 26; ++x)
       zone[static_cast<std::size_t>(at(m, x, y))] = 1;
   const std::vector<char> grown = grow_zone(m, zone, 200);
   for (std::size_t b = 0; b < zone.size(); ++b) {
@@ -67,24 +64,22 @@ TEST(GrowZone, EachIslandGrowsToItsShareOfTheTarget) {
       EXPECT_TRUE(grown[b]) << "a flagged block left out: " << b;
     }
   }
-  EXPECT_EQ(near(m, grown, 3, 3, 6), 25);
-  EXPECT_EQ(near(m, grown, 15, 15, 10), 217);
+  EXPECT_EQ(near(m, grown, 7, 7, 6), 85);
+  EXPECT_EQ(near(m, grown, 25, 25, 8), 141);
   int total = 0;
   for (char g : grown)
     total += g;
-  EXPECT_EQ(total, 25 + 217);
+  EXPECT_EQ(total, 85 + 141);
 }
 
-// Blocks one apart are one island: a 1-block gap does not split what will merge in one ring.
-TEST(GrowZone, BlocksOneApartAreOneIsland) {
+// Two blocks one apart grown to 10: the first ring adds the 7 blocks at grid distance 1 from
+// either (the one between them once), 9 in all; the second, which passes the target, is added
+// whole: the 12 at distance 2, 21 in all.
+TEST(GrowZone, TheLastRingIsAddedWhole) {
   const Model m = grid();
   std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
   zone[static_cast<std::size_t>(at(m, 14, 15))] = 1;
   zone[static_cast<std::size_t>(at(m, 16, 15))] = 1;
-  // One island of 2 blocks grown to 10: the first ring adds the 7 blocks at grid distance 1
-  // from either (the one between them once), 9 in all; the second the 12 at distance 2, 21 in
-  // all. As two islands with shares of 5, the first would stop at 5 and the second take one
-  // more ring of 7: 16.
   const std::vector<char> grown = grow_zone(m, zone, 10);
   int total = 0;
   for (char g : grown)
@@ -92,9 +87,10 @@ TEST(GrowZone, BlocksOneApartAreOneIsland) {
   EXPECT_EQ(total, 21);
 }
 
-// An island that cannot take its share (hemmed in by `within`) leaves it to the others: the
-// zone still reaches the target.
-TEST(GrowZone, AnIslandHemmedInLeavesItsShareToTheRest) {
+// With `within`, a block hemmed in by blocks it does not flag takes no ring; the others grow
+// until the target: the single block at (15, 15) takes 7 rings (113 blocks, 85 after 6), 114
+// in all.
+TEST(GrowZone, OnlyBlocksWithinAreAdded) {
   const Model m = grid();
   std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
   std::vector<char> within(zone.size(), 1);
@@ -106,7 +102,7 @@ TEST(GrowZone, AnIslandHemmedInLeavesItsShareToTheRest) {
   int total = 0;
   for (char g : grown)
     total += g;
-  EXPECT_GE(total, 100);
+  EXPECT_EQ(total, 114);
   EXPECT_EQ(near(m, grown, 3, 3, 6), 1);
 }
 
