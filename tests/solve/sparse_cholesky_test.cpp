@@ -85,6 +85,29 @@ TEST(SparseCholesky, RefusesAMatrixThatIsNotPositiveDefinite) {
   }
 }
 
+// A matrix of another pattern than the analyzed one is refused from the first factorization on,
+// whatever factor CHOLMOD picked (its own routines would factorize it into a wrong factor).
+TEST(SparseCholesky, RefusesAPatternOtherThanTheAnalyzedOne) {
+  for (int side : {2, 20}) {
+    const CholmodMatrix lower = grid(side, 5);
+    SparseCholesky k;
+    k.analyze(lower, 6);
+    CholmodMatrix other = lower;
+    other.coeffRef(lower.rows() - 1, 0) = 1e-3;  // an entry the analyzed pattern lacks
+    other.makeCompressed();
+    EXPECT_THROW((void)k.factorize(other), std::logic_error) << side << " blocks a side";
+    CholmodMatrix moved = lower;  // as many entries, one of them elsewhere
+    moved.coeffRef(lower.rows() - 1, 0) = 1e-3;
+    moved.prune([&](std::int64_t row, std::int64_t col, double) {
+      return !(row == lower.rows() - 1 && col == lower.rows() - 1);
+    });
+    moved.makeCompressed();
+    ASSERT_EQ(moved.nonZeros(), lower.nonZeros());
+    EXPECT_THROW((void)k.factorize(moved), std::logic_error) << side << " blocks a side";
+    EXPECT_TRUE(k.factorize(lower)) << side << " blocks a side";
+  }
+}
+
 // One analysis, many factorizations: from the second on, the matrix is put in the factor's
 // order by the class itself (CHOLMOD is told the order is natural), which must give the same
 // factor. Each factor's solution is checked by its residual (K x = b), for K's own order and

@@ -57,7 +57,9 @@ struct SparseCholesky::Impl {
   std::vector<std::int64_t> permuted_i;
   std::vector<double> permuted_x;
   std::vector<std::int64_t> scatter;  // entry k of the caller's lower -> permuted_x (-1: above)
-  std::uint64_t caller_pattern = 0;   // its checksum: another one is refused (CHOLMOD's is not)
+  // The analyzed pattern's checksum: a matrix of another one is refused (CHOLMOD would
+  // factorize it without notice, into a wrong factor).
+  std::uint64_t analyzed_pattern = 0;
 
   Impl() {
     cholmod_l_start(&common);
@@ -130,8 +132,7 @@ std::uint64_t fingerprint(const CholmodMatrix& pattern) {
 }
 
 // A checksum of a pattern (sums of its indices weighted by position, which vectorize, unlike
-// fingerprint()): it tells the analyzed pattern from another passed by mistake, which CHOLMOD
-// would factorize without notice.
+// fingerprint()): it tells the analyzed pattern from another passed by mistake.
 std::uint64_t pattern_checksum(const CholmodMatrix& a) {
   std::uint64_t sum = static_cast<std::uint64_t>(a.rows());
   for (std::int64_t c = 0; c <= a.cols(); ++c)
@@ -180,6 +181,7 @@ void SparseCholesky::finish_analysis(const CholmodMatrix& lower) {
   if (!impl_->factor)
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   impl_->factorizations_since_analysis = 0;
+  impl_->analyzed_pattern = pattern_checksum(lower);
   impl_->scatter.clear();
   impl_->permuted_p.clear();
   impl_->permuted_i.clear();
@@ -403,7 +405,6 @@ void SparseCholesky::permute_into_factor_order(const CholmodMatrix& lower) {
     m.permuted_i[static_cast<std::size_t>(at)] = row[static_cast<std::size_t>(k)];
     m.scatter[static_cast<std::size_t>(k)] = at;
   }
-  m.caller_pattern = pattern_checksum(lower);
 }
 
 bool SparseCholesky::factorize(const CholmodMatrix& lower) {
@@ -411,16 +412,16 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
     analyze(lower);
   Impl& m = *impl_;
   const auto start = std::chrono::steady_clock::now();
+  if (!lower.isCompressed() || lower.rows() != n_ || lower.nonZeros() != analyzed_nonzeros_ ||
+      pattern_checksum(lower) != m.analyzed_pattern)
+    throw std::logic_error("SparseCholesky::factorize: a pattern other than the analyzed one");
   // From the second factorization of a supernodal analysis: the matrix in the factor's order,
   // factorized as natural (no transposes; see Impl).
-  const bool permute = m.factor->is_super && m.factor->Perm && lower.isCompressed() &&
-                       ++m.factorizations_since_analysis >= 2;
+  const bool permute =
+      m.factor->is_super && m.factor->Perm && ++m.factorizations_since_analysis >= 2;
   if (permute) {
     if (m.scatter.empty())
       permute_into_factor_order(lower);
-    if (lower.nonZeros() != static_cast<std::int64_t>(m.scatter.size()) ||
-        pattern_checksum(lower) != m.caller_pattern)
-      throw std::logic_error("SparseCholesky::factorize: a pattern that was not analyzed");
     const double* x = lower.valuePtr();
     for (std::size_t k = 0; k < m.scatter.size(); ++k)
       if (m.scatter[k] >= 0)

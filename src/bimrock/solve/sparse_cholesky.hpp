@@ -57,8 +57,8 @@ class SparseCholesky {
 
   /// Numeric factorization; false when the matrix is not positive definite, in which case
   /// failed_column() names the original column where the factorization broke down. The matrix
-  /// must have the analyzed pattern: from the second factorization of one analysis on, another
-  /// pattern is a std::logic_error (CHOLMOD itself does not check).
+  /// must be compressed and have the analyzed pattern, else it is a std::logic_error (CHOLMOD
+  /// itself does not check).
   bool factorize(const CholmodMatrix& lower);
 
   [[nodiscard]] bool factorized() const { return factorized_; }
