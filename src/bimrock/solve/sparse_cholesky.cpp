@@ -182,10 +182,10 @@ void SparseCholesky::finish_analysis(const CholmodMatrix& lower) {
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   impl_->factorizations_since_analysis = 0;
   impl_->analyzed_pattern = pattern_checksum(lower);
-  impl_->scatter.clear();
-  impl_->permuted_p.clear();
-  impl_->permuted_i.clear();
-  impl_->permuted_x.clear();
+  impl_->scatter = {};  // released, not only emptied: the next pattern may be refactorized never
+  impl_->permuted_p = {};
+  impl_->permuted_i = {};
+  impl_->permuted_x = {};
   n_ = lower.rows();
   analyzed_nonzeros_ = lower.nonZeros();
   factor_flops_ = impl_->common.fl;
