@@ -109,6 +109,17 @@ std::vector<Eigen::Index> every(Eigen::Index step, Eigen::Index size, Eigen::Ind
   return rows;
 }
 
+// A solution of the tangent's equations against the dense active block's (the second method):
+// z, and the undamped w = M z + q, to 1e-9.
+void expect_dense_solution(const ChainLcp& chain, const std::vector<Eigen::Index>& active,
+                           const ActiveSetEquations::Damping& damping,
+                           const ActiveSetEquations::Solution& s) {
+  const VectorXd z = dense_solution(chain, active, damping);
+  const VectorXd w = chain.m_dense * z + chain.split.q;
+  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
+  EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+}
+
 TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   ChainLcp chain;
   make_chain(40, 7, chain);
@@ -117,10 +128,7 @@ TEST(ReducedTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   const std::vector<Eigen::Index> active = every(3, equations.size());  // one or both modes
   const ActiveSetEquations::Solution s = equations.solve(active);
   ASSERT_TRUE(s.regular);
-  const VectorXd z = dense_solution(chain, active, {});
-  const VectorXd w = chain.m_dense * z + chain.split.q;
-  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
-  EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+  expect_dense_solution(chain, active, {}, s);
   EXPECT_EQ(equations.factorizations(), 1);
 }
 
@@ -141,10 +149,7 @@ TEST(ReducedTangent, TheSolvesOwnWIsTheDenseBlocksFreshOrThroughAnUpdate) {
         equations.solve(active, {}, ActiveSetEquations::Check::from_solve);
     ASSERT_TRUE(s.regular);
     EXPECT_FALSE(s.measured);
-    const VectorXd z = dense_solution(chain, active, {});
-    const VectorXd w = chain.m_dense * z + chain.split.q;
-    EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
-    EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+    expect_dense_solution(chain, active, {}, s);
   }
   EXPECT_EQ(equations.factorizations(), 1);
   EXPECT_EQ(equations.updated_factors(), 1);
@@ -223,10 +228,7 @@ TEST(ReducedTangent, UpdatesTheKeptFactorWhereFewRowsChange) {
   ASSERT_TRUE(s.regular);
   EXPECT_EQ(equations.factorizations(), 1);
   EXPECT_EQ(equations.updated_factors(), 1);
-  const VectorXd z = dense_solution(chain, next, {});
-  const VectorXd w = chain.m_dense * z + chain.split.q;
-  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
-  EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+  expect_dense_solution(chain, next, {}, s);
   ActiveSetEquations::Damping damping{VectorXd::Zero(static_cast<Eigen::Index>(next.size())),
                                       VectorXd::Constant(equations.size(), 0.1)};
   damping.factor.head(4).setConstant(0.5);
@@ -368,10 +370,7 @@ TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {
     damping.factor(i) = 0.5;
   const ActiveSetEquations::Solution s = equations.solve(active, damping);
   ASSERT_TRUE(s.regular);
-  const VectorXd z = dense_solution(chain, active, damping);
-  EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff());
-  const VectorXd w = chain.m_dense * z + chain.split.q;  // the undamped w
-  EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * w.cwiseAbs().maxCoeff());
+  expect_dense_solution(chain, active, damping, s);  // w undamped
 }
 
 TEST(ReducedTangent, ActiveSetOnTheTangentAgreesWithLemkeOnTheDenseMatrix) {

@@ -92,9 +92,8 @@ struct LcpSolvers {
   int reserve_switches = 0;
   int regions = 0;
   int interrupted_rounds = 0;
-  int last_zone = 0;     // blocks of the last zone condensed onto first (not of its reserves)
-  bool not_yet = false;  // K itself because few blocks were needed so far (not condensed)
-  int last_region = 0;   // blocks of the last region
+  int last_zone = 0;    // blocks of the last zone condensed onto first (not of its reserves)
+  int last_region = 0;  // blocks of the last region
 
   // What zones are condensed from: the region's S, or K.
   [[nodiscard]] const CondensedStiffness& base() const { return region ? *region : whole_k; }
@@ -107,16 +106,14 @@ struct LcpSolvers {
   // new region (K factorized with the region last), or from K itself where a region would be
   // too large to be worth it. What was kept in S's unknowns goes.
   void condense(const Model& model, const std::vector<char>& needed, const PlasticOptions& opt) {
-    // Few blocks needed, none condensed yet: K itself, until more are needed.
-    const bool few = size(needed) <= opt.condense_after_blocks;
-    if (!condensed && few) {
-      whole();
-      not_yet = true;
+    // Few blocks needed and none condensed yet: K itself, until more are needed.
+    if (condensations == 0 && size(needed) <= opt.condense_after_blocks) {
+      if (!condensed)
+        whole();
       return;
     }
-    if (condensed && (not_yet ? few : holds(needed, level)))  // level 0: K holds every block
+    if (condensations > 0 && holds(needed, level))  // level 0: K itself holds every block
       return;
-    not_yet = false;
     for (int l = level - 1; l >= 1 && !levels.empty(); --l)
       if (holds(needed, l)) {
         retire();
