@@ -410,5 +410,43 @@ TEST(ReducedTangent, ASingularLocalBlockIsLeftToTheDenseRoute) {
   EXPECT_EQ(s.ray.size(), 0);
 }
 
+// Six springs k_i to the ground, each the only stiffness of its unknown and each with one yield
+// mode of gradient a_i (associated, perfectly plastic): C = a k, Phi = C^T, N = a k a. With
+// every mode active, M = N - C K^-1 Phi = 0 and the tangent K - Phi N^-1 C = 0: a mechanism, and
+// with q < 0 no solution (Farkas: r >= 0, M r = 0, q . r < 0 for every r > 0).
+TEST(ReducedTangent, ASingularTangentGivesItsMechanismAndIsLeftAsItWas) {
+  const Eigen::Index n = 6;
+  const VectorXd k = (VectorXd(n) << 1.0, 2.0, 3.0, 1.5, 2.5, 4.0).finished() * 1e9;
+  const VectorXd a = (VectorXd(n) << 1.0, 0.5, 2.0, 1.2, 0.8, 1.5).finished();
+  MatrixXd dense_k = k.asDiagonal();
+  CholmodMatrix k_lower = dense_k.sparseView();
+  CholmodMatrix c = MatrixXd(a.cwiseProduct(k).asDiagonal()).sparseView();
+  CholmodMatrix phi = CholmodMatrix(c.transpose());
+  CholmodMatrix n_matrix = MatrixXd(a.cwiseProduct(a).cwiseProduct(k).asDiagonal()).sparseView();
+  const VectorXd q = -VectorXd::LinSpaced(n, 1.0, 6.0);
+  SplitLcp split{&k_lower, &c, &phi, &n_matrix, q, {}, {}};
+  for (Eigen::Index r = 0; r < n; ++r) {
+    split.group.push_back(r);
+    split.group_rank.push_back(1);
+  }
+  SparseCholesky k_factor;
+  k_factor.analyze(k_lower, 6);
+  ASSERT_TRUE(k_factor.factorize(k_lower));
+  TangentFactor tangent;
+  ReducedTangentEquations equations(split, k_factor, tangent);
+  const ActiveSetEquations::Solution s = equations.solve(every(1, n));
+  EXPECT_FALSE(s.regular);
+  ASSERT_EQ(s.ray.size(), n);
+  // The certificate, checked here on the dense M (= 0 up to round-off of k).
+  EXPECT_GE(s.ray.minCoeff(), 0.0);
+  EXPECT_DOUBLE_EQ(s.ray.maxCoeff(), 1.0);
+  EXPECT_LT(q.dot(s.ray), 0.0);
+  // The kernel search factorizes a shifted tangent: the tangent itself is left as formed,
+  // K - Phi N^-1 C = 0 to round-off of k (the smallest shift is 1e-12 k).
+  ASSERT_EQ(tangent.matrix.rows(), n);
+  for (Eigen::Index j = 0; j < n; ++j)
+    EXPECT_LE(std::abs(tangent.matrix.coeff(j, j)), 1e-14 * k(j)) << "unknown " << j;
+}
+
 }  // namespace
 }  // namespace bimrock

@@ -139,6 +139,8 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   [[nodiscard]] bool factorize(const CholmodMatrix& tangent);
   /// The place of `row` among the rows of its group.
   [[nodiscard]] int mode(Eigen::Index row) const;
+  /// The mechanism's multipliers where `tangent` is singular, as a Farkas certificate checked
+  /// on the LCP; empty if they are not one.
   [[nodiscard]] Eigen::VectorXd mechanism(const CholmodMatrix& tangent,
                                           const std::vector<Eigen::Index>& active,
                                           const std::vector<Local>& locals);

@@ -363,48 +363,59 @@ void SparseCholesky::permute_into_factor_order(const CholmodMatrix& lower) {
   const auto* perm = static_cast<const std::int64_t*>(m.factor->Perm);
   const std::int64_t* outer = lower.outerIndexPtr();
   const std::int64_t* inner = lower.innerIndexPtr();
-  const auto nnz = static_cast<std::size_t>(lower.nonZeros());
   const auto n = static_cast<std::size_t>(n_);
   std::vector<std::int64_t> inverse(n);
   for (std::int64_t k = 0; k < n_; ++k)
     inverse[static_cast<std::size_t>(perm[k])] = k;
-  // Each entry's row and column in the factor's order (the lower triangle: row >= column);
-  // entries above the diagonal are not read, as CHOLMOD reads a lower triangle (stype -1).
-  std::vector<std::int64_t> row(nnz, -1);
-  std::vector<std::int64_t> column(nnz, -1);
-  std::vector<std::int64_t> row_start(n + 1, 0);
-  m.permuted_p.assign(n + 1, 0);
-  for (std::int64_t j = 0; j < n_; ++j)
-    for (std::int64_t k = outer[j]; k < outer[j + 1]; ++k) {
-      if (inner[k] < j)
-        continue;
-      const std::int64_t a = inverse[static_cast<std::size_t>(inner[k])];
+  // Entry k (row >= column) lands at (max(a, b), min(a, b)) in the factor's order, a and b the
+  // places of its row and column; entries above the diagonal are not read, as CHOLMOD reads a
+  // lower triangle (stype -1). The places are worked out again at each pass, not kept per
+  // entry: the map of the largest tangent is built at the analysis's peak of memory.
+  const auto visit = [&](auto&& take) {
+    for (std::int64_t j = 0; j < n_; ++j) {
       const std::int64_t b = inverse[static_cast<std::size_t>(j)];
-      row[static_cast<std::size_t>(k)] = std::max(a, b);
-      column[static_cast<std::size_t>(k)] = std::min(a, b);
-      ++row_start[static_cast<std::size_t>(std::max(a, b) + 1)];
-      ++m.permuted_p[static_cast<std::size_t>(std::min(a, b) + 1)];
+      for (std::int64_t k = outer[j]; k < outer[j + 1]; ++k)
+        if (inner[k] >= j) {
+          const std::int64_t a = inverse[static_cast<std::size_t>(inner[k])];
+          take(k, std::max(a, b), std::min(a, b));
+        }
     }
-  for (std::size_t r = 0; r < n; ++r) {
-    row_start[r + 1] += row_start[r];
-    m.permuted_p[r + 1] += m.permuted_p[r];
-  }
-  // A counting sort by row, then a stable one by column: each column's rows ascend.
+  };
+  m.permuted_p.assign(n + 1, 0);
+  visit([&](std::int64_t, std::int64_t, std::int64_t column) {
+    ++m.permuted_p[static_cast<std::size_t>(column + 1)];
+  });
+  for (std::size_t c = 0; c < n; ++c)
+    m.permuted_p[c + 1] += m.permuted_p[c];
+  // Each column's entries, in the order met, then sorted by row within the column.
   const auto kept = static_cast<std::size_t>(m.permuted_p[n]);
-  std::vector<std::int64_t> by_row(kept);
-  for (std::size_t k = 0; k < nnz; ++k)
-    if (row[k] >= 0)
-      by_row[static_cast<std::size_t>(row_start[static_cast<std::size_t>(row[k])]++)] =
-          static_cast<std::int64_t>(k);
-  std::vector<std::int64_t> next(m.permuted_p.begin(), m.permuted_p.end() - 1);
-  m.scatter.assign(nnz, -1);
+  std::vector<std::int64_t> source(kept);  // the caller's entry at each place
   m.permuted_i.assign(kept, 0);
-  m.permuted_x.assign(kept, 0.0);
-  for (std::int64_t k : by_row) {
-    const auto at = next[static_cast<std::size_t>(column[static_cast<std::size_t>(k)])]++;
-    m.permuted_i[static_cast<std::size_t>(at)] = row[static_cast<std::size_t>(k)];
-    m.scatter[static_cast<std::size_t>(k)] = at;
+  {
+    std::vector<std::int64_t> next(m.permuted_p.begin(), m.permuted_p.end() - 1);
+    visit([&](std::int64_t k, std::int64_t row, std::int64_t column) {
+      const auto at = static_cast<std::size_t>(next[static_cast<std::size_t>(column)]++);
+      m.permuted_i[at] = row;
+      source[at] = k;
+    });
   }
+  inverse = {};
+  m.scatter.assign(static_cast<std::size_t>(lower.nonZeros()), -1);
+  std::vector<std::pair<std::int64_t, std::int64_t>> column;  // (row, entry) of one column
+  for (std::size_t c = 0; c < n; ++c) {
+    const auto first = static_cast<std::size_t>(m.permuted_p[c]);
+    const auto last = static_cast<std::size_t>(m.permuted_p[c + 1]);
+    column.clear();
+    for (std::size_t at = first; at < last; ++at)
+      column.emplace_back(m.permuted_i[at], source[at]);
+    std::sort(column.begin(), column.end());
+    for (std::size_t at = first; at < last; ++at) {
+      m.permuted_i[at] = column[at - first].first;
+      m.scatter[static_cast<std::size_t>(column[at - first].second)] =
+          static_cast<std::int64_t>(at);
+    }
+  }
+  m.permuted_x.assign(kept, 0.0);
 }
 
 bool SparseCholesky::factorize(const CholmodMatrix& lower) {
