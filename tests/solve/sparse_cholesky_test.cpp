@@ -12,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include <bimrock/solve/schur_solver.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 #include "solve/random_lcp.hpp"
@@ -240,6 +241,50 @@ TEST(SparseCholesky, SchurComplementOfEachNestedZoneIsTheDenseOne) {
   levels.assign(levels.size(), 0);
   levels[5 * kSide + 5] = 2;
   EXPECT_THROW(chol.analyze_last(lower, 6, levels), std::logic_error);
+}
+
+// S x = b through the trailing block of the factor S was read from (SchurSolver): the solution
+// of the dense Schur complement (formed from K as in the test above), for each nested zone, one
+// right-hand side and several.
+TEST(SchurSolver, SolvesWithEachNestedZonesSchurComplementAsTheDenseOne) {
+  constexpr int kSide = 12;
+  const CholmodMatrix lower = grid(kSide, 13);
+  const Eigen::MatrixXd k = Eigen::MatrixXd(lower).selfadjointView<Eigen::Lower>();
+  std::vector<char> levels(kSide * kSide, 0);
+  for (int y = 0; y < kSide; ++y)
+    for (int x = 0; x < kSide; ++x) {
+      const bool inner = x >= 4 && x < 8 && y >= 5 && y < 9;
+      const bool ring = x >= 3 && x < 9 && y >= 4 && y < 10;
+      levels[y * kSide + x] = inner ? 2 : ring ? 1 : 0;
+    }
+  SparseCholesky chol;
+  chol.analyze_last(lower, 6, levels);
+  ASSERT_TRUE(chol.factorize(lower));
+  for (int level : {1, 2}) {
+    const std::vector<std::int64_t> p = chol.trailing_unknowns(level);
+    std::vector<std::int64_t> e;
+    for (std::int64_t i = 0; i < lower.rows(); ++i)
+      if (levels[static_cast<std::size_t>(i / 6)] < level)
+        e.push_back(i);
+    const Eigen::MatrixXd s =
+        Eigen::MatrixXd(k(p, p)) -
+        k(p, e) * Eigen::MatrixXd(k(e, e)).llt().solve(Eigen::MatrixXd(k(e, p)));
+    const SchurSolver solver(chol, level);
+    ASSERT_EQ(solver.rows(), static_cast<std::int64_t>(p.size()));
+    EXPECT_GT(solver.factor_nonzeros(), 0);
+    EXPECT_LT(solver.factor_nonzeros(), chol.factor_nonzeros());
+    Eigen::MatrixXd b(s.rows(), 3);
+    for (Eigen::Index i = 0; i < b.rows(); ++i)
+      for (Eigen::Index j = 0; j < b.cols(); ++j)
+        b(i, j) = std::sin(0.37 * static_cast<double>(i) + static_cast<double>(j)) + 0.1;
+    const Eigen::MatrixXd expected = s.llt().solve(b);
+    const Eigen::MatrixXd x = solver.solve(b);
+    EXPECT_LE((x - expected).norm(), 1e-10 * expected.norm()) << level;
+    const Eigen::VectorXd one = solver.solve(Eigen::VectorXd(b.col(1)));
+    EXPECT_LE((one - expected.col(1)).norm(), 1e-10 * expected.col(1).norm()) << level;
+    EXPECT_EQ(solver.work().solved_columns, 4);
+  }
+  EXPECT_THROW(SchurSolver(chol, 3), std::logic_error);
 }
 
 // A load on the blocks ordered last is solved forward on the trailing part of L only; the

@@ -7,7 +7,10 @@
 // tangent wherever it applies (0): the carried stage factors, the monitor's displacement and the
 // collapse bracket must agree, and the tangent must have run and proven collapse steps itself
 // (a collapse proven on a tangent is a Farkas certificate checked with K, as the dense route's).
-// The same when rounds are ended early by an iterate that shows their LCP lacks points.
+// The same when rounds are ended early by an iterate that shows their LCP lacks points, and
+// when the LCPs on the tangent also hold every point around the plastic flow.
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
@@ -35,14 +38,34 @@ TEST(ReducedTangentRoute, RoundsEndedByAnIterateGiveTheSameAnalysis) {
   // (PlasticOptions::interrupt_after = 1), and one that violates points outside its LCP ends
   // the round. That changes only which rounds run (the last round of every increment is solved
   // and checked whole), so the analysis must be the same as on the dense active block; and
-  // rounds must have been ended so, or the test proves nothing.
+  // rounds must have been ended so, or the test proves nothing. (Candidates around the flow
+  // would leave too few points outside the LCPs of this small model: none.)
   const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
   const PlasticResult interrupted =
-      testing::run_abutment({.reduced_tangent_rows = 0, .interrupt_after = 1});
+      testing::run_abutment({.near_rings = 0, .reduced_tangent_rows = 0, .interrupt_after = 1});
   EXPECT_GT(interrupted.interrupted_rounds, 0) << "no round was ended by an iterate";
   EXPECT_EQ(dense.interrupted_rounds, 0);
   std::printf("%d rounds ended by an iterate\n", interrupted.interrupted_rounds);
   testing::expect_same_analysis(dense, interrupted);
+}
+
+TEST(ReducedTangentRoute, CandidatesAroundTheFlowGiveTheSameAnalysis) {
+  // Where the last increment ran on the tangent, every point within PlasticOptions::near_rings
+  // rings of the flow's blocks joins the LCP (inactive rows cost only their w there). More
+  // candidates change only which rows each LCP holds, not its solution: the analysis must be
+  // the dense route's, with and without them, and they must have made some LCP larger.
+  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult without = testing::run_abutment({.near_rings = 0, .reduced_tangent_rows = 0});
+  const PlasticResult around = testing::run_abutment({.near_rings = 2, .reduced_tangent_rows = 0});
+  int largest_without = 0, largest_around = 0;
+  for (const IncrementRecord& r : without.history)
+    largest_without = std::max(largest_without, r.lcp_size);
+  for (const IncrementRecord& r : around.history)
+    largest_around = std::max(largest_around, r.lcp_size);
+  EXPECT_GT(largest_around, largest_without) << "no LCP took the points around the flow";
+  std::printf("largest LCP %d rows without them, %d with them\n", largest_without, largest_around);
+  testing::expect_same_analysis(dense, without);
+  testing::expect_same_analysis(dense, around);
 }
 
 }  // namespace

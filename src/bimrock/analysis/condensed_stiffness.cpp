@@ -28,7 +28,7 @@ CondensedStiffness::CondensedStiffness(const SparseCholesky& k, const SparseMatr
 }
 
 CondensedStiffness::CondensedStiffness(const CondensedStiffness& base, const SparseCholesky& factor,
-                                       int level, bool factorize)
+                                       int level, bool solvable)
     : zone_(base.whole() ? base.blocks_.size() : base.zone_.size(), 0) {
   if (factor.rows() != base.lower().rows())
     throw std::logic_error("CondensedStiffness: the factor is not of the base's S");
@@ -52,16 +52,18 @@ CondensedStiffness::CondensedStiffness(const CondensedStiffness& base, const Spa
   select_.resize(n, static_cast<Eigen::Index>(unknowns.size()));
   select_.setFromTriplets(ones.begin(), ones.end());
   lower_ = &own_lower_;
-  if (factorize) {
-    own_factor_ = std::make_unique<SparseCholesky>();
-    own_factor_->analyze(own_lower_, kBlock);
-    // S is positive definite where K is (a Schur complement of it): a failure is round-off in a
-    // nearly singular K, reported by factorized() (the caller goes on with K itself).
-    factorized_ = own_factor_->factorize(own_lower_);
+  if (solvable) {
+    // The trailing block of base's factor is a factor of S: no factorization of its own (one
+    // was 20 MB and 0.01-0.05 s per zone at 10^4 blocks; docs/performance.md, session 17).
+    own_factor_ = std::make_unique<SchurSolver>(factor, level);
     factor_ = own_factor_.get();
-  } else {
-    factorized_ = false;
   }
+}
+
+const SpdSolver& CondensedStiffness::factor() const {
+  if (!factor_)
+    throw std::logic_error("CondensedStiffness: a region's S is not solved with");
+  return *factor_;
 }
 
 std::vector<char> CondensedStiffness::on_blocks(const std::vector<char>& per_model_block) const {
@@ -93,14 +95,14 @@ Eigen::VectorXd CondensedStiffness::local(const Eigen::VectorXd& v) const {
 }
 
 std::vector<char> grow_zone(const Model& model, std::vector<char> zone, int target,
-                            const std::vector<char>* within) {
+                            const std::vector<char>* within, int rings) {
   const std::vector<std::vector<int>> next_to = neighbours(model);
   std::vector<int> ring;
   for (int b = 0; b < model.n_blocks(); ++b)
     if (zone[static_cast<std::size_t>(b)])
       ring.push_back(b);
   auto count = static_cast<int>(ring.size());
-  while (count < target && !ring.empty()) {
+  for (int added = 0; added < rings && count < target && !ring.empty(); ++added) {
     std::vector<int> next;
     for (int b : ring)
       for (int n : next_to[static_cast<std::size_t>(b)]) {

@@ -8,19 +8,22 @@
 /// and the reduced tangent K - Phi_A N_AA^-1 C_A becomes S - Phi_PA N_AA^-1 C_AP. S is the
 /// trailing part of K's factor when K is ordered with the zone last (L_PP L_PP^T = S), so it
 /// costs one factorization of K; each active-set iteration then factorizes a matrix of the
-/// zone's size instead of the whole model's, and each column of K^-1 Phi is a solve with S's
-/// factor. The displacements of the whole model are solves with K's factor, once per round.
+/// zone's size instead of the whole model's, and each column of K^-1 Phi is a solve with S
+/// through that trailing block (SchurSolver: S is not factorized again). The displacements of
+/// the whole model are solves with K's factor, once per round.
 ///
 /// A condensation may start from another one: K condensed onto a region R, then R's S
 /// condensed onto a zone inside it. Condensing in steps gives the same S (Schur complements
 /// compose: eliminating E then R \ P is eliminating E u (R \ P)), and a zone that outgrows
 /// itself inside R costs a factorization of R's S, not of K.
+#include <limits>
 #include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include <bimrock/assembly/yield_system.hpp>
+#include <bimrock/solve/schur_solver.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 namespace bimrock {
@@ -31,17 +34,15 @@ class CondensedStiffness {
   CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower);
   /// `base` condensed onto its zone of blocks of level >= `level`: `factor` is base's S
   /// factorized in the order of levels given per block of base (SparseCholesky::analyze_last);
-  /// this S is read from it, and factorized in its own order if `factorize` (else factor()
-  /// must not be used: the S of a region is factorized in the order of the zones inside it).
+  /// this S is read from it, and solved through it if `solvable` (else factor() must not be
+  /// used: the S of a region is factorized in the order of the zones inside it). `factor` must
+  /// then outlive this and stay as it is.
   CondensedStiffness(const CondensedStiffness& base, const SparseCholesky& factor, int level,
-                     bool factorize = true);
+                     bool solvable = true);
 
   CondensedStiffness(const CondensedStiffness&) = delete;
   CondensedStiffness& operator=(const CondensedStiffness&) = delete;
 
-  /// S's factorization succeeded (false where round-off in a nearly singular K made S
-  /// indefinite, or where S was not factorized: then factor() must not be used).
-  [[nodiscard]] bool factorized() const { return factorized_; }
   /// S = K: nothing condensed.
   [[nodiscard]] bool whole() const { return zone_.empty(); }
   [[nodiscard]] bool covers(int block) const {
@@ -55,7 +56,8 @@ class CondensedStiffness {
   [[nodiscard]] std::vector<char> on_blocks(const std::vector<char>& per_model_block) const;
   /// S, lower triangle, in the unknowns' order of local().
   [[nodiscard]] const SparseMatrix& lower() const { return *lower_; }
-  [[nodiscard]] const SparseCholesky& factor() const { return *factor_; }
+  /// Solves with S: K's factor, or the trailing block of the factor S was read from.
+  [[nodiscard]] const SpdSolver& factor() const;
 
   /// The yield rows with C and Phi in S's unknowns. Throws std::logic_error if a row touches an
   /// unknown outside the zone (its terms would be lost).
@@ -68,17 +70,17 @@ class CondensedStiffness {
   std::vector<int> blocks_;
   SparseMatrix select_;     // n x |P|: column k picks the unknown of S's k-th (empty when whole())
   SparseMatrix own_lower_;  // S when condensed
-  std::unique_ptr<SparseCholesky> own_factor_;
+  std::unique_ptr<SchurSolver> own_factor_;
   const SparseMatrix* lower_ = nullptr;
-  const SparseCholesky* factor_ = nullptr;
-  bool factorized_ = true;
+  const SpdSolver* factor_ = nullptr;
 };
 
 /// The blocks of `needed` and rings of their neighbours (blocks that share an interface), ring
-/// by ring, until at least `target` blocks are flagged or no block is left to add. With
-/// `within`, only blocks it flags are added.
+/// by ring, until at least `target` blocks are flagged, `rings` rings are added, or no block is
+/// left to add. With `within`, only blocks it flags are added.
 std::vector<char> grow_zone(const Model& model, std::vector<char> needed, int target,
-                            const std::vector<char>* within = nullptr);
+                            const std::vector<char>* within = nullptr,
+                            int rings = std::numeric_limits<int>::max());
 
 /// The blocks of `region` none of whose neighbours is outside it.
 std::vector<char> interior(const Model& model, const std::vector<char>& region);

@@ -12,7 +12,7 @@ namespace {
 constexpr Eigen::Index kBatch = 128;
 }  // namespace
 
-FlexibilityColumns::FlexibilityColumns(const SparseCholesky& k, std::int64_t budget_bytes)
+FlexibilityColumns::FlexibilityColumns(const SpdSolver& k, std::int64_t budget_bytes)
     : k_(k),
       budget_columns_(
           std::max<std::int64_t>(kBatch, budget_bytes / std::max<std::int64_t>(1, 8 * k.rows()))) {}

@@ -13,7 +13,7 @@
 #include <Eigen/Core>
 
 #include <bimrock/assembly/yield_system.hpp>
-#include <bimrock/solve/sparse_cholesky.hpp>
+#include <bimrock/solve/spd_solver.hpp>
 
 namespace bimrock {
 
@@ -21,7 +21,7 @@ class FlexibilityColumns {
  public:
   /// @param budget_bytes the columns kept are dropped (all at once) before they would exceed
   ///        this; they are then computed again when needed.
-  FlexibilityColumns(const SparseCholesky& k, std::int64_t budget_bytes);
+  FlexibilityColumns(const SpdSolver& k, std::int64_t budget_bytes);
 
   /// Makes the columns of rows `rows` of sys known and current.
   void prepare(const YieldSystem& sys, const std::vector<Eigen::Index>& rows);
@@ -45,7 +45,7 @@ class FlexibilityColumns {
   [[nodiscard]] static std::vector<std::pair<std::int64_t, double>> phi_column(
       const YieldSystem& sys, Eigen::Index r);
 
-  const SparseCholesky& k_;
+  const SpdSolver& k_;
   std::int64_t budget_columns_;
   std::unordered_map<std::uint64_t, Entry> cache_;
   std::int64_t solved_ = 0;

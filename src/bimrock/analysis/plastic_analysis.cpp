@@ -86,8 +86,9 @@ struct LcpSolvers {
   std::optional<FlexibilityColumns> columns;  // S^-1 phi_r of the rows that were ever active
   std::optional<TangentFactor> tangent;       // the reduced tangent (analysis and last factor)
   std::set<std::pair<int, int>> last_active;  // (point, mode) yielding in the last increment
-  CholeskyWork retired_tangent;               // the work of tangents of earlier condensations
-  CholeskyWork retired_s;                     // and of their S's factors
+  bool last_on_tangent = false;  // the last carried increment's LCP ran on the reduced tangent
+  CholeskyWork retired_tangent;  // the work of tangents of earlier condensations
+  CholeskyWork retired_s;        // and of their solves with S
   int condensations = 0;
   int reserve_switches = 0;
   int regions = 0;
@@ -158,10 +159,6 @@ struct LcpSolvers {
       use(top);
     }
     ++condensations;
-    if (!condensed->factorized()) {  // round-off in a nearly singular K: K itself, from now on
-      drop_region();
-      whole();
-    }
     report("condensation", needed);
   }
   static int size(const std::vector<char>& z) {
@@ -258,7 +255,7 @@ struct LcpSolvers {
     // The columns kept may take 12 bytes per entry of S's factor, 1.5 times its values: they
     // set the peak of the dense route's increments (a third of it cost 2.5x the columns' time
     // at 10^4 blocks for 10% less peak; docs/performance.md, sessions 10 and 11).
-    const SparseCholesky& s = condensed->factor();
+    const SpdSolver& s = condensed->factor();
     columns.emplace(s, std::max<std::int64_t>(64 << 20, 12 * s.factor_nonzeros()));
     tangent.emplace();
   }
@@ -503,6 +500,28 @@ struct HintRecorder {
   }
 };
 
+// The points whose blocks lie within `rings` rings of the plastic flow's (the blocks of the last
+// increment's active rows and of this step's required points) join the candidates as near
+// ones. On the reduced tangent a candidate row costs only its share of w = q + N z - C x, and
+// the flow spreads to the neighbours of its blocks: one round holds what rounds added one after
+// another (PlasticOptions::near_rings).
+void join_around_flow(const StageContext& ctx, const std::set<std::pair<int, int>>& last_active,
+                      int rings, std::vector<char>& candidate) {
+  std::vector<char> blocks(static_cast<std::size_t>(ctx.model.n_blocks()), 0);
+  for (const auto& [p, mode] : last_active)
+    flag_blocks(ctx.points[static_cast<std::size_t>(p)], blocks);
+  for (std::size_t p = 0; p < candidate.size(); ++p)
+    if (candidate[p] == kRequired)
+      flag_blocks(ctx.points[p], blocks);
+  blocks = grow_zone(ctx.model, std::move(blocks), std::numeric_limits<int>::max(), nullptr, rings);
+  for (std::size_t p = 0; p < candidate.size(); ++p) {
+    const YieldPoint& point = ctx.points[p];
+    if (candidate[p] == kNone && blocks[static_cast<std::size_t>(point.block_i)] &&
+        (point.block_j == kGround || blocks[static_cast<std::size_t>(point.block_j)]))
+      candidate[p] = kNear;
+  }
+}
+
 // One increment from state s: `step` is the increment of the stage factor (load control) or of
 // the prescribed displacement (displacement control).
 Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step,
@@ -539,6 +558,8 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   // unloaded state (a stage's first) brings nearly every point within the margin.
   join_nearest(predicted_f, change_f, tol, opt.candidate_margin, kNearPerReached * reached,
                candidate);
+  if (solvers.last_on_tangent && opt.near_rings > 0)
+    join_around_flow(ctx, solvers.last_active, opt.near_rings, candidate);
   // The warm start: the rows that yielded in the last increment, then those of the last round
   // (a round adds only the points the last one violated: its solution is nearly this one's).
   std::set<std::pair<int, int>> warm_rows = solvers.last_active;
@@ -580,6 +601,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
                    kNearPerReached * outside, candidate);
     return outside;
   };
+  bool on_tangent = false;  // the last round's LCP ran on the reduced tangent
   for (t.rounds = 1; t.rounds <= opt.max_rounds; ++t.rounds) {
     // The LCP in the unknowns of the zone K is condensed onto (condensed_stiffness.hpp): it
     // must hold every block the required candidates touch, and under displacement control the
@@ -648,6 +670,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       const Eigen::VectorXd* warm_start = warm.maxCoeff() > 0.0 ? &warm : nullptr;
       const bool tangent_route = opt.active_set && opt.reduced_tangent_rows >= 0 &&
                                  warm.sum() >= opt.reduced_tangent_rows && lcp.symmetric();
+      on_tangent = tangent_route;
       if (tangent_route) {
         // Many rows active: the equations of each active set on the sparse reduced tangent.
         // It reads no column of K^-1 Phi: those kept go, to make room for its factor (they
@@ -795,6 +818,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       add_violated_modes(violators, f_next, tol, warm_rows);
     if (added == 0) {
       solvers.last_active = warm_rows;
+      solvers.last_on_tangent = on_tangent;
       t.rows = sys.rows;
       t.lambda = lambda;
       t.status = Trial::Status::carried;

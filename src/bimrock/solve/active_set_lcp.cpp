@@ -325,6 +325,13 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
                    iteration, rows.size(), (damping.factor.array() > 0.0).count(), taken, f,
                    at.residuals.worst_relative());
     if (taken == 0.0) {
+      // No step lowers the objective: before failing, the caller may find that the iterate
+      // violates rows the LCP lacks, and solve a larger one instead.
+      if (interrupt != nullptr && options.interrupt_after > 0 &&
+          at.residuals.worst_relative() > options.accuracy && (*interrupt)(at)) {
+        at.status = LcpStatus::interrupted;
+        return at;
+      }
       at.status = LcpStatus::numerical_failure;
       return at;
     }

@@ -109,8 +109,9 @@ class ActiveSetEquations {
 
 class ActiveSetLcp final : public LcpSolver {
  public:
-  /// Asked with each measured iterate of projected Newton from its interrupt_after-th step on
-  /// (z >= 0, its w and residuals): true stops the solve, with LcpStatus::interrupted and that
+  /// Asked with each measured iterate of projected Newton from its interrupt_after-th step on,
+  /// and with the last one where no step lowers the objective (before the solve fails), as
+  /// z >= 0 with its w and residuals: true stops the solve, with LcpStatus::interrupted and that
   /// iterate. A caller that can learn from an iterate that its problem is incomplete (an
   /// increment's LCP lacking candidates) need not wait for a long solve to end.
   using Interrupt = std::function<bool(const LcpResult&)>;

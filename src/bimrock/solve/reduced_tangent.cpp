@@ -140,7 +140,7 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
   return r;
 }
 
-ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k,
+ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const SpdSolver& k,
                                                  TangentFactor& tangent, TangentUpdateLimits limits)
     : lcp_(lcp),
       k_(k),

@@ -88,7 +88,7 @@ class ReducedTangentEquations final : public ActiveSetEquations {
  public:
   /// @param k the factor of K (to measure results)
   /// @param tangent analyzed here when its pattern is not the tangent's
-  ReducedTangentEquations(const SplitLcp& lcp, const SparseCholesky& k, TangentFactor& tangent,
+  ReducedTangentEquations(const SplitLcp& lcp, const SpdSolver& k, TangentFactor& tangent,
                           TangentUpdateLimits limits = {});
 
   [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }
@@ -146,7 +146,7 @@ class ReducedTangentEquations final : public ActiveSetEquations {
                                           const std::vector<Local>& locals);
 
   const SplitLcp& lcp_;
-  const SparseCholesky& k_;
+  const SpdSolver& k_;
   TangentFactor& tangent_;
   /// w = q + N z - C x and its scale |q| + |N| |z| + |C| |x|, row by row in one pass.
   void residual(const Eigen::VectorXd& z, const Eigen::VectorXd& x, Eigen::VectorXd& w,

@@ -522,6 +522,97 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
   return solve(m).col(0);
 }
 
+Eigen::MatrixXd SparseCholesky::solve_trailing(const Eigen::MatrixXd& b, int level) const {
+  const cholmod_factor* f = impl_->factor;
+  if (!factorized_ || level < 1 || level > levels() || !f->is_super)
+    throw std::logic_error("SparseCholesky::solve_trailing before analyze_last and factorize");
+  const std::int64_t first = level_start_[static_cast<std::size_t>(level)];
+  if (b.rows() != n_ - first)
+    throw std::logic_error("SparseCholesky::solve_trailing: b is not of the zone's size");
+  const auto* super = static_cast<const std::int64_t*>(f->super);
+  const auto* pi = static_cast<const std::int64_t*>(f->pi);
+  const auto* px = static_cast<const std::int64_t*>(f->px);
+  const auto* ls = static_cast<const std::int64_t*>(f->s);
+  const auto* lx = static_cast<const double*>(f->x);
+  // The supernodes that hold the zone's columns: each from its first column in the zone on
+  // (analyze_last keeps the order given, so every row of those columns is in the zone too).
+  std::size_t from = 0;
+  while (from < f->nsuper && super[from + 1] <= first)
+    ++from;
+  struct Part {
+    Eigen::Map<const Eigen::MatrixXd, 0, Eigen::OuterStride<>> l;  // its columns, then below
+    std::int64_t column;                                           // the first, in the zone
+    std::int64_t ncol;
+    const std::int64_t* below;  // the rows under its diagonal block, in the factor's order
+  };
+  const auto part = [&](std::size_t sn) {
+    const std::int64_t j0 = std::max(super[sn], first);
+    const std::int64_t offset = j0 - super[sn];
+    const std::int64_t nrow = pi[sn + 1] - pi[sn];
+    const std::int64_t ncol = super[sn + 1] - j0;
+    return Part{
+        {lx + px[sn] + offset * nrow + offset, nrow - offset, ncol, Eigen::OuterStride<>(nrow)},
+        j0 - first,
+        ncol,
+        ls + pi[sn] + offset + ncol};
+  };
+  Eigen::Index widest = 0;  // rows under a diagonal block, at most
+  for (std::size_t sn = from; sn < f->nsuper; ++sn)
+    widest = std::max(widest, part(sn).l.rows() - part(sn).ncol);
+  // Forward (L_PP y = b) then backward (L_PP^T x = y), supernode by supernode, on x in place:
+  // one vector (Eigen's matrix-vector kernels), or rows of several (row-major: the rows a
+  // supernode updates are scattered, and each is then contiguous).
+  const auto sweep = [&](auto& x, auto& buffer) {
+    for (std::size_t sn = from; sn < f->nsuper; ++sn) {
+      const Part p = part(sn);
+      const Eigen::Index nbelow = p.l.rows() - p.ncol;
+      auto head = x.middleRows(p.column, p.ncol);
+      p.l.topRows(p.ncol).template triangularView<Eigen::Lower>().solveInPlace(head);
+      auto under = buffer.topRows(nbelow);
+      under.noalias() = p.l.bottomRows(nbelow) * head;
+      for (Eigen::Index i = 0; i < nbelow; ++i)
+        x.row(p.below[i] - first) -= under.row(i);
+    }
+    for (std::size_t sn = f->nsuper; sn-- > from;) {
+      const Part p = part(sn);
+      const Eigen::Index nbelow = p.l.rows() - p.ncol;
+      auto known = buffer.topRows(nbelow);
+      for (Eigen::Index i = 0; i < nbelow; ++i)
+        known.row(i) = x.row(p.below[i] - first);
+      auto head = x.middleRows(p.column, p.ncol);
+      head.noalias() -= p.l.bottomRows(nbelow).transpose() * known;
+      p.l.topRows(p.ncol).template triangularView<Eigen::Lower>().transpose().solveInPlace(head);
+    }
+  };
+  if (b.cols() == 1) {
+    Eigen::VectorXd x = b.col(0);
+    Eigen::VectorXd buffer(widest);
+    sweep(x, buffer);
+    return x;
+  }
+  using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  RowMajor x = b;
+  RowMajor buffer(widest, x.cols());
+  sweep(x, buffer);
+  return x;
+}
+
+std::int64_t SparseCholesky::trailing_nonzeros(int level) const {
+  const cholmod_factor* f = impl_->factor;
+  if (!f || level < 1 || level > levels() || !f->is_super)
+    return 0;
+  const std::int64_t first = level_start_[static_cast<std::size_t>(level)];
+  const auto* super = static_cast<const std::int64_t*>(f->super);
+  const auto* pi = static_cast<const std::int64_t*>(f->pi);
+  std::int64_t count = 0;
+  for (std::size_t sn = 0; sn < f->nsuper; ++sn)
+    if (super[sn + 1] > first) {
+      const std::int64_t offset = std::max(super[sn], first) - super[sn];
+      count += (pi[sn + 1] - pi[sn] - offset) * (super[sn + 1] - super[sn] - offset);
+    }
+  return count;
+}
+
 Eigen::VectorXd SparseCholesky::solve_from(const Eigen::VectorXd& b, std::int64_t first) const {
   const cholmod_factor* f = impl_->factor;
   const auto start = std::chrono::steady_clock::now();

@@ -9,22 +9,16 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <bimrock/solve/spd_solver.hpp>
+
 namespace bimrock {
 
 using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>;
 
-/// The work one factor object has done: where a solver's time goes (the bench reports it).
-struct CholeskyWork {
-  int factorizations = 0;
-  std::int64_t solved_columns = 0;  ///< right-hand sides, over all solves
-  double factorize_seconds = 0.0;
-  double solve_seconds = 0.0;
-};
-
-class SparseCholesky {
+class SparseCholesky final : public SpdSolver {
  public:
   SparseCholesky();
-  ~SparseCholesky();
+  ~SparseCholesky() override;
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 
@@ -66,9 +60,9 @@ class SparseCholesky {
   /// with another pattern must be analyzed anew before it is factorized.
   [[nodiscard]] std::int64_t analyzed_nonzeros() const { return analyzed_nonzeros_; }
   [[nodiscard]] std::int64_t failed_column() const { return failed_column_; }
-  [[nodiscard]] std::int64_t rows() const { return n_; }
+  [[nodiscard]] std::int64_t rows() const override { return n_; }
   /// Non-zeros of the factor L (a measure of its memory: 8 bytes each plus indices).
-  [[nodiscard]] std::int64_t factor_nonzeros() const;
+  [[nodiscard]] std::int64_t factor_nonzeros() const override;
   /// CHOLMOD chose a supernodal factor (else simplicial: small or very sparse factors).
   [[nodiscard]] bool supernodal() const;
   /// Floating-point operations of one numeric factorization (CHOLMOD's count at analysis; 0
@@ -79,10 +73,17 @@ class SparseCholesky {
   /// first quarter or more of the factor's order (after analyze_last(), a load on a zone) is
   /// solved forward from its first non-zero only (L y = b leaves y = 0 before it): up to half
   /// the work of a solve.
-  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-  [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const override;
+  [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override;
 
-  [[nodiscard]] const CholeskyWork& work() const { return work_; }
+  /// After analyze_last() and a successful factorize(): x = S^-1 b for the Schur complement S of
+  /// zone `level` (schur_complement()), through the trailing block of the factor (L_PP L_PP^T =
+  /// S), b and x in the order of trailing_unknowns(level). Not counted in work().
+  [[nodiscard]] Eigen::MatrixXd solve_trailing(const Eigen::MatrixXd& b, int level) const;
+  /// Non-zeros of that trailing block of the factor.
+  [[nodiscard]] std::int64_t trailing_nonzeros(int level) const;
+
+  [[nodiscard]] const CholeskyWork& work() const override { return work_; }
 
  private:
   struct Impl;
