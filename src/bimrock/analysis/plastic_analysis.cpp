@@ -33,8 +33,9 @@ namespace {
 constexpr double kMechanismRatio = 1e6;
 /// What a point is to an increment's LCP: a required candidate (open, or its predictor reaches
 /// yield, or a round violated it), a near one (within the candidate margin: its rows only save a
-/// round, so it joins only where the condensed zone holds it already), or neither.
-enum Candidacy : char { kNone = 0, kRequired = 1, kNear = 2 };
+/// round, so it joins only where the condensed zone holds it already), one near the plastic flow
+/// (PlasticOptions::near_rings: likewise), or neither.
+enum Candidacy : char { kNone = 0, kRequired = 1, kNear = 2, kAround = 3 };
 /// Candidates within the margin of yield (PlasticOptions::candidate_margin), at most this many
 /// per point that reaches it (or, in a later round, per violated point added).
 constexpr std::size_t kNearPerReached = 2;
@@ -518,7 +519,7 @@ void join_around_flow(const StageContext& ctx, const std::set<std::pair<int, int
     const YieldPoint& point = ctx.points[p];
     if (candidate[p] == kNone && blocks[static_cast<std::size_t>(point.block_i)] &&
         (point.block_j == kGround || blocks[static_cast<std::size_t>(point.block_j)]))
-      candidate[p] = kNear;
+      candidate[p] = kAround;
   }
 }
 
@@ -558,7 +559,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
   // unloaded state (a stage's first) brings nearly every point within the margin.
   join_nearest(predicted_f, change_f, tol, opt.candidate_margin, kNearPerReached * reached,
                candidate);
-  if (solvers.last_on_tangent && opt.near_rings > 0)
+  // Whether the LCPs hold points around the flow (they go, if a round on them stalls).
+  bool around = solvers.last_on_tangent && opt.near_rings > 0;
+  if (around)
     join_around_flow(ctx, solvers.last_active, opt.near_rings, candidate);
   // The warm start: the rows that yielded in the last increment, then those of the last round
   // (a round adds only the points the last one violated: its solution is nearly this one's).
@@ -582,7 +585,8 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
            (point.block_j == kGround || solvers.condensed->covers(point.block_j));
   };
   const auto in_lcp = [&](int p) {
-    return candidate[p] == kRequired || (candidate[p] == kNear && held(p));
+    return candidate[p] == kRequired ||
+           ((candidate[p] == kNear || candidate[p] == kAround) && held(p));
   };
   // Points found violated (by a round's check, or by an iterate's) are required in the next
   // round. The flow spreads further: for each one that was outside the LCP, at most
@@ -688,6 +692,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         // once: the next round holds them. The last round is always solved and checked whole.
         std::vector<int> outside;  // points outside the LCP that the iterate violates
         YieldValues f_iterate;
+        int stalled = 0;  // iterates shown to the interrupt
         const ActiveSetLcp::Interrupt interrupt = [&](const LcpResult& iterate) {
           AnalysisState at = s;  // load control: the tangent route's
           const Eigen::VectorXd lambda = iterate.z - gap_old;
@@ -699,7 +704,11 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           for (int p : violators)
             if (!in_lcp(p))
               outside.push_back(p);
-          return !outside.empty();
+          // A round that stalls on the points around the flow, twice as long, goes on without
+          // them: past a collapse the larger LCP can leave projected Newton lowering its
+          // objective without end, where the smaller one's rounds find the mechanism's
+          // certificate (docs/performance.md, session 17).
+          return !outside.empty() || (around && ++stalled > opt.interrupt_after);
         };
         r = solvers.active_set.solve(equations, warm_start, &interrupt);
         t.active_set_iterations += r.steps;
@@ -712,6 +721,10 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           clock.lap("increments: LCP", "increments: K^-1 Phi columns",
                     columns.seconds() - columns_before);
           // The next round starts from the iterate's active rows and the modes it violates.
+          if (outside.empty()) {  // it stalled on the points around the flow
+            std::replace(candidate.begin(), candidate.end(), kAround, kNone);
+            around = false;
+          }
           require(outside, f_iterate);
           warm_rows = active_rows(sys, r.z, gap_old);
           add_violated_modes(outside, f_iterate, tol, warm_rows);
