@@ -206,19 +206,38 @@ TEST(SparseCholesky, SchurComplementOfTheBlocksOrderedLastIsTheDenseOne) {
   }
 }
 
+// Levels of a side x side grid of blocks: 2 on the patch [x0, x1) x [y0, y1), 1 on one ring of
+// blocks around it, 0 on the rest.
+std::vector<char> patch_and_ring(int side, int x0, int x1, int y0, int y1) {
+  std::vector<char> levels(static_cast<std::size_t>(side * side), 0);
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      const bool inner = x >= x0 && x < x1 && y >= y0 && y < y1;
+      const bool ring = x >= x0 - 1 && x < x1 + 1 && y >= y0 - 1 && y < y1 + 1;
+      levels[static_cast<std::size_t>(y * side + x)] = inner ? 2 : ring ? 1 : 0;
+    }
+  return levels;
+}
+
+// The Schur complement of dense K onto the unknowns p (in that order): K_pp - K_pe K_ee^-1 K_ep,
+// e the unknowns of blocks below `level`.
+Eigen::MatrixXd dense_schur(const Eigen::MatrixXd& k, const std::vector<char>& levels, int level,
+                            const std::vector<std::int64_t>& p) {
+  std::vector<std::int64_t> e;
+  for (std::int64_t i = 0; i < k.rows(); ++i)
+    if (levels[static_cast<std::size_t>(i / 6)] < level)
+      e.push_back(i);
+  EXPECT_EQ(p.size() + e.size(), static_cast<std::size_t>(k.rows())) << level;
+  return Eigen::MatrixXd(k(p, p)) -
+         k(p, e) * Eigen::MatrixXd(k(e, e)).llt().solve(Eigen::MatrixXd(k(e, p)));
+}
+
 // Nested zones in one order: the Schur complement onto each is read from the same factor.
 TEST(SparseCholesky, SchurComplementOfEachNestedZoneIsTheDenseOne) {
   constexpr int kSide = 12;
   const CholmodMatrix lower = grid(kSide, 11);
   const Eigen::MatrixXd k = Eigen::MatrixXd(lower).selfadjointView<Eigen::Lower>();
-  // Level 2: a patch; level 1: one ring of blocks around it; 0: the rest.
-  std::vector<char> levels(kSide * kSide, 0);
-  for (int y = 0; y < kSide; ++y)
-    for (int x = 0; x < kSide; ++x) {
-      const bool inner = x >= 5 && x < 8 && y >= 4 && y < 7;
-      const bool ring = x >= 4 && x < 9 && y >= 3 && y < 8;
-      levels[y * kSide + x] = inner ? 2 : ring ? 1 : 0;
-    }
+  std::vector<char> levels = patch_and_ring(kSide, 5, 8, 4, 7);
   SparseCholesky chol;
   chol.analyze_last(lower, 6, levels);
   ASSERT_TRUE(chol.factorize(lower));
@@ -226,15 +245,7 @@ TEST(SparseCholesky, SchurComplementOfEachNestedZoneIsTheDenseOne) {
   for (int level : {1, 2}) {
     const Eigen::MatrixXd s =
         Eigen::MatrixXd(chol.schur_complement(lower, level)).selfadjointView<Eigen::Lower>();
-    const std::vector<std::int64_t> p = chol.trailing_unknowns(level);
-    std::vector<std::int64_t> e;
-    for (std::int64_t i = 0; i < lower.rows(); ++i)
-      if (levels[static_cast<std::size_t>(i / 6)] < level)
-        e.push_back(i);
-    ASSERT_EQ(p.size() + e.size(), static_cast<std::size_t>(lower.rows())) << level;
-    const Eigen::MatrixXd expected =
-        Eigen::MatrixXd(k(p, p)) -
-        k(p, e) * Eigen::MatrixXd(k(e, e)).llt().solve(Eigen::MatrixXd(k(e, p)));
+    const Eigen::MatrixXd expected = dense_schur(k, levels, level, chol.trailing_unknowns(level));
     EXPECT_LE((s - expected).cwiseAbs().maxCoeff(), 1e-12 * k.cwiseAbs().maxCoeff()) << level;
   }
   // A patch next to blocks two levels lower is no nesting.
@@ -250,25 +261,13 @@ TEST(SchurSolver, SolvesWithEachNestedZonesSchurComplementAsTheDenseOne) {
   constexpr int kSide = 12;
   const CholmodMatrix lower = grid(kSide, 13);
   const Eigen::MatrixXd k = Eigen::MatrixXd(lower).selfadjointView<Eigen::Lower>();
-  std::vector<char> levels(kSide * kSide, 0);
-  for (int y = 0; y < kSide; ++y)
-    for (int x = 0; x < kSide; ++x) {
-      const bool inner = x >= 4 && x < 8 && y >= 5 && y < 9;
-      const bool ring = x >= 3 && x < 9 && y >= 4 && y < 10;
-      levels[y * kSide + x] = inner ? 2 : ring ? 1 : 0;
-    }
+  const std::vector<char> levels = patch_and_ring(kSide, 4, 8, 5, 9);
   SparseCholesky chol;
   chol.analyze_last(lower, 6, levels);
   ASSERT_TRUE(chol.factorize(lower));
   for (int level : {1, 2}) {
     const std::vector<std::int64_t> p = chol.trailing_unknowns(level);
-    std::vector<std::int64_t> e;
-    for (std::int64_t i = 0; i < lower.rows(); ++i)
-      if (levels[static_cast<std::size_t>(i / 6)] < level)
-        e.push_back(i);
-    const Eigen::MatrixXd s =
-        Eigen::MatrixXd(k(p, p)) -
-        k(p, e) * Eigen::MatrixXd(k(e, e)).llt().solve(Eigen::MatrixXd(k(e, p)));
+    const Eigen::MatrixXd s = dense_schur(k, levels, level, p);
     const SchurSolver solver(chol, level);
     ASSERT_EQ(solver.rows(), static_cast<std::int64_t>(p.size()));
     EXPECT_GT(solver.factor_nonzeros(), 0);
