@@ -57,8 +57,10 @@ struct PlasticOptions {
   /// the objective, before the round would fail. Near a collapse the LCP of a round that
   /// lacks the mechanism's points can take projected Newton many damped steps, where the
   /// round that holds them proves the collapse at once (10^4 blocks: the step past the collapse
-  /// 1.2 -> 0.8 s, the whole analysis 6.65 -> 6.29 s, medians of 3).
-  int interrupt_after = 8;
+  /// 1.2 -> 0.8 s, the whole analysis 6.65 -> 6.29 s, medians of 3). 3 since the candidates
+  /// around the flow (session 17, 10^4 blocks: 4.0-4.2 s against 4.4-4.5 s with 8, 4.3-4.4 s
+  /// with 2, 20 s with 1; 10^5 blocks about the same; 979 blocks 0.82 s against 0.71 s).
+  int interrupt_after = 3;
   /// The LCPs are solved on K condensed statically onto a zone of blocks that holds every
   /// candidate point (docs/formulation.md) while that zone is at most this fraction of the
   /// model; a larger one is not worth it, and the analysis goes on with K itself (0: never
