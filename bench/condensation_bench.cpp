@@ -1,7 +1,9 @@
 // Kernel benchmarks of the static condensation of K onto a plastic zone (issue 5): K factorized
 // with the zone's blocks ordered last (against BM_Factorize, K in its own best order), the
 // zone's Schur complement read from that factor, and a factorization of the Schur complement
-// (what each active-set iteration of a condensed analysis pays instead of a whole tangent's).
+// (what each active-set iteration of a condensed analysis pays instead of a whole tangent's),
+// and solves with the Schur complement through K's factor (SchurSolver) against a factor of its
+// own.
 // The zone: the blocks nearest the mass's centre, an eighth of them (at 10^4 blocks the plastic
 // zone of `bimrock bench`'s plastic model at collapse holds 12% of its blocks).
 #include <algorithm>
@@ -10,6 +12,7 @@
 #include <benchmark/benchmark.h>
 
 #include <bimrock/assembly/global_system.hpp>
+#include <bimrock/solve/schur_solver.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 #include "brick_mass.hpp"
@@ -89,11 +92,50 @@ void BM_FactorizeSchur(benchmark::State& state) {
   state.counters["schur_factor_nnz"] = static_cast<double>(chol.factor_nonzeros());
 }
 
+// state.range(1) right-hand sides solved with S (1: one vector), through `solver`.
+void solve_with(benchmark::State& state, const SpdSolver& solver) {
+  const Eigen::Index columns = state.range(1);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Ones(solver.rows(), columns);
+  const Eigen::VectorXd v = Eigen::VectorXd::Ones(solver.rows());
+  for (auto _ : state) {
+    if (columns == 1)
+      benchmark::DoNotOptimize(solver.solve(v));
+    else
+      benchmark::DoNotOptimize(solver.solve(b));
+  }
+  state.counters["solver_nnz"] = static_cast<double>(solver.factor_nonzeros());
+}
+
+// What the analysis does since session 17: forward and back through L_PP, K's factor's trailing
+// block (L_PP L_PP^T = S).
+void BM_SolveSchurTrailing(benchmark::State& state) {
+  ZoneCase c(state, true);
+  solve_with(state, SchurSolver(c.k, 1));
+  c.set_counters(state);
+}
+
+// What it did before: S factorized in its own order (CHOLMOD's supernodal solve).
+void BM_SolveSchurOwnFactor(benchmark::State& state) {
+  ZoneCase c(state, true);
+  const SparseMatrix s = c.k.schur_complement(c.lower);
+  SparseCholesky chol;
+  chol.analyze(s, 6);
+  chol.factorize(s);
+  solve_with(state, chol);
+  c.set_counters(state);
+}
+
 #define BIMROCK_ZONE_SIZES RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond)
 BENCHMARK(BM_AnalyzeZoneLast)->BIMROCK_ZONE_SIZES;
 BENCHMARK(BM_FactorizeZoneLast)->BIMROCK_ZONE_SIZES;
 BENCHMARK(BM_SchurComplement)->BIMROCK_ZONE_SIZES;
 BENCHMARK(BM_FactorizeSchur)->BIMROCK_ZONE_SIZES;
+BENCHMARK(BM_SolveSchurTrailing)
+    ->ArgsProduct({{1000, 10000, 100000}, {1, 32}})
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SolveSchurOwnFactor)
+    ->ArgsProduct({{1000, 10000, 100000}, {1, 32}})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace bimrock
