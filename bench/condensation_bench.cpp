@@ -92,9 +92,8 @@ void BM_FactorizeSchur(benchmark::State& state) {
   state.counters["schur_factor_nnz"] = static_cast<double>(chol.factor_nonzeros());
 }
 
-// state.range(1) right-hand sides solved with S (1: one vector), through `solver`.
-void solve_with(benchmark::State& state, const SpdSolver& solver) {
-  const Eigen::Index columns = state.range(1);
+// `columns` right-hand sides solved with S (1: one vector), through `solver`.
+void solve_with(benchmark::State& state, const SpdSolver& solver, Eigen::Index columns) {
   const Eigen::MatrixXd b = Eigen::MatrixXd::Ones(solver.rows(), columns);
   const Eigen::VectorXd v = Eigen::VectorXd::Ones(solver.rows());
   for (auto _ : state) {
@@ -108,20 +107,20 @@ void solve_with(benchmark::State& state, const SpdSolver& solver) {
 
 // What the analysis does since session 17: forward and back through L_PP, K's factor's trailing
 // block (L_PP L_PP^T = S).
-void BM_SolveSchurTrailing(benchmark::State& state) {
+void BM_SolveSchurTrailing(benchmark::State& state, Eigen::Index columns) {
   ZoneCase c(state, true);
-  solve_with(state, SchurSolver(c.k, 1));
+  solve_with(state, SchurSolver(c.k, 1), columns);
   c.set_counters(state);
 }
 
 // What it did before: S factorized in its own order (CHOLMOD's supernodal solve).
-void BM_SolveSchurOwnFactor(benchmark::State& state) {
+void BM_SolveSchurOwnFactor(benchmark::State& state, Eigen::Index columns) {
   ZoneCase c(state, true);
   const SparseMatrix s = c.k.schur_complement(c.lower);
   SparseCholesky chol;
   chol.analyze(s, 6);
   chol.factorize(s);
-  solve_with(state, chol);
+  solve_with(state, chol, columns);
   c.set_counters(state);
 }
 
@@ -130,12 +129,10 @@ BENCHMARK(BM_AnalyzeZoneLast)->BIMROCK_ZONE_SIZES;
 BENCHMARK(BM_FactorizeZoneLast)->BIMROCK_ZONE_SIZES;
 BENCHMARK(BM_SchurComplement)->BIMROCK_ZONE_SIZES;
 BENCHMARK(BM_FactorizeSchur)->BIMROCK_ZONE_SIZES;
-BENCHMARK(BM_SolveSchurTrailing)
-    ->ArgsProduct({{1000, 10000, 100000}, {1, 32}})
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SolveSchurOwnFactor)
-    ->ArgsProduct({{1000, 10000, 100000}, {1, 32}})
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveSchurTrailing, vector, 1)->BIMROCK_ZONE_SIZES;
+BENCHMARK_CAPTURE(BM_SolveSchurTrailing, columns32, 32)->BIMROCK_ZONE_SIZES;
+BENCHMARK_CAPTURE(BM_SolveSchurOwnFactor, vector, 1)->BIMROCK_ZONE_SIZES;
+BENCHMARK_CAPTURE(BM_SolveSchurOwnFactor, columns32, 32)->BIMROCK_ZONE_SIZES;
 
 }  // namespace
 }  // namespace bimrock
