@@ -106,5 +106,19 @@ TEST(GrowZone, OnlyBlocksWithinAreAdded) {
   EXPECT_EQ(near(m, grown, 3, 3, 6), 1);
 }
 
+// With a ring limit, the growth stops there whatever the target: a single block and its first
+// two rings, 2 r^2 + 2 r + 1 = 13 blocks for r = 2 (as the counts above: 85 after 6 rings).
+TEST(GrowZone, StopsAfterTheRingsAsked) {
+  const Model m = grid();
+  std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
+  zone[static_cast<std::size_t>(at(m, 15, 15))] = 1;
+  const std::vector<char> grown = grow_zone(m, zone, m.n_blocks(), nullptr, 2);
+  int total = 0;
+  for (char g : grown)
+    total += g;
+  EXPECT_EQ(total, 13);
+  EXPECT_EQ(near(m, grown, 15, 15, 2), 13);
+}
+
 }  // namespace
 }  // namespace bimrock

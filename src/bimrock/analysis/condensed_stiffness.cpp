@@ -55,8 +55,8 @@ CondensedStiffness::CondensedStiffness(const CondensedStiffness& base, const Spa
   if (solvable) {
     // The trailing block of base's factor is a factor of S: no factorization of its own (one
     // was 20 MB and 0.01-0.05 s per zone at 10^4 blocks; docs/performance.md, session 17).
-    own_factor_ = std::make_unique<SchurSolver>(factor, level);
-    factor_ = own_factor_.get();
+    schur_solver_ = std::make_unique<SchurSolver>(factor, level);
+    factor_ = schur_solver_.get();
   }
 }
 

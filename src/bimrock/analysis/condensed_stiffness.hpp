@@ -70,7 +70,7 @@ class CondensedStiffness {
   std::vector<int> blocks_;
   SparseMatrix select_;     // n x |P|: column k picks the unknown of S's k-th (empty when whole())
   SparseMatrix own_lower_;  // S when condensed
-  std::unique_ptr<SchurSolver> own_factor_;
+  std::unique_ptr<SchurSolver> schur_solver_;
   const SparseMatrix* lower_ = nullptr;
   const SpdSolver* factor_ = nullptr;
 };
