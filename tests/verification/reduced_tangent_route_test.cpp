@@ -71,5 +71,17 @@ TEST(ReducedTangentRoute, CandidatesAroundTheFlowGiveTheSameAnalysis) {
   testing::expect_same_analysis(dense, around);
 }
 
+TEST(ReducedTangentRoute, ARoundLeftUnsolvedGoesOnWithoutThePointsAroundTheFlow) {
+  // Iterates never shown to an interrupt (PlasticOptions::interrupt_after = 0): past the
+  // collapse projected Newton runs on the larger LCP to its iteration limit. That round, not
+  // solved, must go on without the points around the flow (it counts as ended early), and the
+  // analysis must still be the dense route's.
+  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult never =
+      testing::run_abutment({.near_rings = 2, .reduced_tangent_rows = 0, .interrupt_after = 0});
+  EXPECT_GT(never.interrupted_rounds, 0) << "no unsolved round went on without those points";
+  testing::expect_same_analysis(dense, never);
+}
+
 }  // namespace
 }  // namespace bimrock

@@ -716,7 +716,12 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         if (std::getenv("BIMROCK_DEBUG_LCP") && r.status != LcpStatus::solved)
           std::fprintf(stderr, "reduced tangent m=%d: %s after %d, worst residual %g\n", m,
                        to_string(r.status), r.steps, r.residuals.worst_relative());
-        if (r.status == LcpStatus::interrupted) {
+        // A round on the points around the flow that ends unsolved (at the iteration limit, or
+        // where no step lowers the objective) goes on without them too, as a stalled one does.
+        const bool unsolved_around =
+            around && r.z.size() == m &&
+            (r.status == LcpStatus::iteration_limit || r.status == LcpStatus::numerical_failure);
+        if (r.status == LcpStatus::interrupted || unsolved_around) {
           ++solvers.interrupted_rounds;
           clock.lap("increments: LCP", "increments: K^-1 Phi columns",
                     columns.seconds() - columns_before);
