@@ -20,8 +20,21 @@
 namespace bimrock {
 namespace {
 
+// Every LCP solved on the dense active block: the second method each test compares with.
+const PlasticResult& dense_route() {
+  static const PlasticResult result = testing::run_abutment({.reduced_tangent_rows = -1});
+  return result;
+}
+
+int largest_lcp(const PlasticResult& r) {
+  int largest = 0;
+  for (const IncrementRecord& i : r.history)
+    largest = std::max(largest, i.lcp_size);
+  return largest;
+}
+
 TEST(ReducedTangentRoute, GivesTheSameAnalysisAsTheDenseActiveBlock) {
-  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult& dense = dense_route();
   const PlasticResult tangent = testing::run_abutment({.reduced_tangent_rows = 0});
   int factorizations = 0;
   for (const IncrementRecord& r : tangent.history)
@@ -40,7 +53,7 @@ TEST(ReducedTangentRoute, RoundsEndedByAnIterateGiveTheSameAnalysis) {
   // and checked whole), so the analysis must be the same as on the dense active block; and
   // rounds must have been ended so, or the test proves nothing. (Candidates around the flow
   // would leave too few points outside the LCPs of this small model: none.)
-  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult& dense = dense_route();
   const PlasticResult interrupted =
       testing::run_abutment({.near_rings = 0, .reduced_tangent_rows = 0, .interrupt_after = 1});
   EXPECT_GT(interrupted.interrupted_rounds, 0) << "no round was ended by an iterate";
@@ -56,14 +69,11 @@ TEST(ReducedTangentRoute, CandidatesAroundTheFlowGiveTheSameAnalysis) {
   // the dense route's, with and without them, and they must have made some LCP larger. Past
   // the collapse, projected Newton stalls on the larger LCP (it has no solution, and no
   // point outside it is violated): that round must have been ended, to go on without them.
-  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult& dense = dense_route();
   const PlasticResult without = testing::run_abutment({.near_rings = 0, .reduced_tangent_rows = 0});
   const PlasticResult around = testing::run_abutment({.near_rings = 2, .reduced_tangent_rows = 0});
-  int largest_without = 0, largest_around = 0;
-  for (const IncrementRecord& r : without.history)
-    largest_without = std::max(largest_without, r.lcp_size);
-  for (const IncrementRecord& r : around.history)
-    largest_around = std::max(largest_around, r.lcp_size);
+  const int largest_without = largest_lcp(without);
+  const int largest_around = largest_lcp(around);
   EXPECT_GT(largest_around, largest_without) << "no LCP took the points around the flow";
   EXPECT_GT(around.interrupted_rounds, 0) << "no round stalled on the points around the flow";
   std::printf("largest LCP %d rows without them, %d with them\n", largest_without, largest_around);
@@ -76,7 +86,7 @@ TEST(ReducedTangentRoute, ARoundLeftUnsolvedGoesOnWithoutThePointsAroundTheFlow)
   // collapse projected Newton runs on the larger LCP to its iteration limit. That round, not
   // solved, must go on without the points around the flow (it counts as ended early), and the
   // analysis must still be the dense route's.
-  const PlasticResult dense = testing::run_abutment({.reduced_tangent_rows = -1});
+  const PlasticResult& dense = dense_route();
   const PlasticResult never =
       testing::run_abutment({.near_rings = 2, .reduced_tangent_rows = 0, .interrupt_after = 0});
   EXPECT_GT(never.interrupted_rounds, 0) << "no unsolved round went on without those points";

@@ -258,6 +258,11 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
   // The damping of every row once a block was singular and proved no collapse: kept (falling)
   // for the next steps, where each undamped try costs a failed factorization and a kernel search.
   double damp_all = 0.0;
+  // The caller's interrupt, if any, asked about the iterate `at` while it is not a solution.
+  const auto interrupted = [&]() {
+    return interrupt != nullptr && options.interrupt_after > 0 &&
+           at.residuals.worst_relative() > options.accuracy && (*interrupt)(at);
+  };
   for (int k = 0; k < options.max_iterations; ++k, ++iteration) {
     if (at.residuals.worst_relative() <= options.accuracy) {
       at.status = LcpStatus::solved;
@@ -327,16 +332,10 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
     if (taken == 0.0) {
       // No step lowers the objective: before failing, the caller may find that the iterate
       // violates rows the LCP lacks, and solve a larger one instead.
-      if (interrupt != nullptr && options.interrupt_after > 0 &&
-          at.residuals.worst_relative() > options.accuracy && (*interrupt)(at)) {
-        at.status = LcpStatus::interrupted;
-        return at;
-      }
-      at.status = LcpStatus::numerical_failure;
+      at.status = interrupted() ? LcpStatus::interrupted : LcpStatus::numerical_failure;
       return at;
     }
-    if (interrupt != nullptr && options.interrupt_after > 0 && k + 1 >= options.interrupt_after &&
-        at.residuals.worst_relative() > options.accuracy && (*interrupt)(at)) {
+    if (k + 1 >= options.interrupt_after && interrupted()) {
       at.status = LcpStatus::interrupted;
       return at;
     }
