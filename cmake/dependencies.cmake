@@ -11,7 +11,10 @@ pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo)
 # SuiteSparse 5 (Debian 12) ships no CMake package: find CHOLMOD by hand.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
+# SuiteSparse's allocator hooks (solve/factor_memory.cpp) live in its config library.
+find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
 add_library(SuiteSparse::CHOLMOD UNKNOWN IMPORTED)
 set_target_properties(SuiteSparse::CHOLMOD PROPERTIES
   IMPORTED_LOCATION "${CHOLMOD_LIBRARY}"
-  INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}")
+  INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}"
+  INTERFACE_LINK_LIBRARIES "${SUITESPARSECONFIG_LIBRARY}")

@@ -2,11 +2,13 @@
 
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/assembly/global_system.hpp>
+#include <bimrock/solve/factor_memory.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 namespace bimrock {
 
 ElasticSolution solve_elastic(const Model& model, bool track_memory) {
+  const KeptFactorMemoryRelease release_at_end;  // declared first: runs after the factor goes
   ElasticSolution s;
   s.timings.track_memory = track_memory;
   {

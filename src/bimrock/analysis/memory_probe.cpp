@@ -5,6 +5,8 @@
 
 #include <malloc.h>
 
+#include <bimrock/solve/factor_memory.hpp>
+
 namespace bimrock {
 
 namespace {
@@ -33,6 +35,7 @@ std::int64_t peak_memory_bytes() {
 }
 
 void release_free_memory() {
+  release_kept_factor_memory();
   malloc_trim(0);
 }
 

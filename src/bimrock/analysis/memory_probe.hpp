@@ -12,9 +12,10 @@ void reset_peak_memory();
 /// The peak resident set since the last reset (or the start of the process) [bytes], or -1.
 [[nodiscard]] std::int64_t peak_memory_bytes();
 
-/// Returns the heap's free memory to the system (glibc's malloc_trim), so that a growth measured
-/// from the current resident set counts what the next phase needs, not what it reuses of the
-/// memory an earlier phase freed. Slow on a large heap: for a benchmark's baseline, not per phase.
+/// Returns the heap's free memory to the system (glibc's malloc_trim, and the factors' blocks
+/// kept for reuse: factor_memory.hpp), so that a growth measured from the current resident set
+/// counts what the next phase needs, not what it reuses of the memory an earlier phase freed.
+/// Slow on a large heap: for a benchmark's baseline, not per phase.
 void release_free_memory();
 
 /// The current resident set [bytes], or -1.

@@ -20,6 +20,7 @@
 #include <bimrock/assembly/kinematics.hpp>
 #include <bimrock/assembly/yield_values.hpp>
 #include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/factor_memory.hpp>
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/reduced_tangent.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
@@ -920,6 +921,7 @@ PlasticResult with_solver_work(PlasticResult result, const SparseCholesky& k,
 
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt,
                                    const IncrementCallback& on_increment) {
+  const KeptFactorMemoryRelease release_at_end;  // declared first: runs after the factors go
   PlasticResult result;
   result.timings.track_memory = opt.track_memory;
   {

@@ -20,6 +20,7 @@
 #include <bimrock/io/line_plot.hpp>
 #include <bimrock/io/results_writer.hpp>
 #include <bimrock/model/reference_cases.hpp>
+#include <bimrock/solve/factor_memory.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 namespace bimrock {
@@ -70,6 +71,12 @@ void add_timings(Run& run, const Timings& t) {
 // The physical limit: CHOLMOD alone on the model's K (assembled outside the clock).
 // Its memory counts K too: the peak over the resident set before K was assembled.
 void measure_limit(const Model& model, Run& run) {
+  // CHOLMOD alone, as it is with glibc's allocator: without the analyses' recycling of its large
+  // blocks (factor_memory.hpp), whose kept pages would count in its peak.
+  const struct GlibcAllocator {
+    GlibcAllocator() { recycle_factor_memory(false); }
+    ~GlibcAllocator() { recycle_factor_memory(true); }
+  } glibc_allocator;
   release_free_memory();
   const double before = static_cast<double>(current_memory_bytes());
   reset_peak_memory();

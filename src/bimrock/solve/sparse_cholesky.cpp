@@ -8,6 +8,8 @@
 
 #include <cholmod.h>
 
+#include <bimrock/solve/factor_memory.hpp>
+
 namespace bimrock {
 
 namespace {
@@ -62,6 +64,7 @@ struct SparseCholesky::Impl {
   std::uint64_t analyzed_pattern = 0;
 
   Impl() {
+    install_factor_memory();  // before CHOLMOD's first block
     cholmod_l_start(&common);
     common.print = 0;  // we report failures ourselves
   }
