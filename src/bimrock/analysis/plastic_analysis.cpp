@@ -70,7 +70,8 @@ struct LcpSolvers {
       : k(k_factor),
         k_lower(k_matrix),
         whole_k(k_factor, k_matrix),
-        active_set(ActiveSetOptions{.interrupt_after = opt.interrupt_after}) {}
+        active_set(ActiveSetOptions{.max_iterations = opt.active_set_iterations,
+                                    .interrupt_after = opt.interrupt_after}) {}
   SparseCholesky& k;  // K's factor: reordered when the region (or the zone) changes
   const SparseMatrix& k_lower;
   const CondensedStiffness whole_k;  // K itself: the base of a region, or of zones without one
@@ -95,6 +96,7 @@ struct LcpSolvers {
   int reserve_switches = 0;
   int regions = 0;
   int interrupted_rounds = 0;
+  int rounds_without_around = 0;
   int last_zone = 0;    // blocks of the last zone condensed onto first (not of its reserves)
   int last_region = 0;  // blocks of the last region
 
@@ -730,6 +732,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           if (outside.empty()) {  // it stalled on the points around the flow
             std::replace(candidate.begin(), candidate.end(), kAround, kNone);
             around = false;
+            ++solvers.rounds_without_around;
           }
           require(outside, f_iterate);
           warm_rows = active_rows(sys, r.z, gap_old);
@@ -915,6 +918,7 @@ PlasticResult with_solver_work(PlasticResult result, const SparseCholesky& k,
   result.reserve_switches = solvers.reserve_switches;
   result.regions = solvers.regions;
   result.interrupted_rounds = solvers.interrupted_rounds;
+  result.rounds_without_around = solvers.rounds_without_around;
   result.zone_blocks = solvers.condensed ? solvers.condensed->zone_blocks() : 0;
   return result;
 }

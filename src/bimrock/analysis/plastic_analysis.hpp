@@ -38,6 +38,9 @@ struct PlasticOptions {
   /// its share of w, and the flow spreads to the next blocks (10^4 blocks, session 17: rounds
   /// 52 -> 32 and the whole analysis 6-7% faster with 2; 0: none).
   int near_rings = 2;
+  /// The most iterations of the active-set method on one LCP: of the block rule, and again as
+  /// many of projected Newton (a round that reaches it falls back to the dense route and Lemke).
+  int active_set_iterations = 50;
   /// Solve each LCP by the primal-dual active-set method first, Lemke only where it fails
   /// (false: Lemke always; the answers agree, only the time differs).
   bool active_set = true;
@@ -153,6 +156,9 @@ struct PlasticResult {
   int reserve_switches = 0;
   int regions = 0;  ///< times K was condensed onto a region (PlasticOptions::region_growth)
   int interrupted_rounds = 0;  ///< rounds an iterate ended (PlasticOptions::interrupt_after)
+  /// Rounds that stalled or ended unsolved on the points around the flow and went on without
+  /// them (PlasticOptions::near_rings).
+  int rounds_without_around = 0;
   int zone_blocks = 0;
 };
 

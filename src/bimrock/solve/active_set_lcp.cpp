@@ -229,11 +229,50 @@ double objective(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const Eigen
 /// Sufficient decrease (Armijo) of the projected line search, and its most halvings.
 constexpr double kArmijo = 1e-4;
 constexpr int kHalvings = 30;
-/// Relative damping of the diagonal of a group with more free rows than its rank, and the first
-/// of a whole singular block that is no mechanism; the latter falls tenfold after each full step
-/// and ends below the smallest.
+/// Relative damping of the diagonal of a group left with more free rows than its rank
+/// (keep_free_rows_within_group_rank), and the first of a whole singular block that is no
+/// mechanism; the latter falls tenfold after each full step and ends below the smallest.
 constexpr double kDamping = 1e-2;
 constexpr double kSmallestDamping = 1e-6;
+
+// Projected Newton's free rows `rows` (sorted, a group's consecutive) with at most as many rows
+// of each group as its rank: its positive rows, then its rows at zero with w_i < 0, the most
+// violated first. A row left out keeps z_i = 0 (d_i = 0): the direction still descends, and the
+// block needs no damping for that group. With `settled` (the last step reached the Newton point
+// of its free rows) every violated row of a group whose positive rows fill its rank joins too,
+// damped: the solution may need it in place of one of them, which the limited steps cannot
+// reach (on random grouped problems they stalled so). Damping the surplus rows of every group
+// instead cut the steps to 1/8 near a collapse: 10^4 blocks 57 -> 52 tangent factorizations,
+// 979 blocks 53 -> 38 (docs/performance.md, session 18).
+void keep_free_rows_within_group_rank(const ActiveSetEquations& problem, const Eigen::VectorXd& z,
+                                      const Eigen::VectorXd& w, bool settled,
+                                      std::vector<Eigen::Index>& rows) {
+  std::vector<Eigen::Index> kept;
+  kept.reserve(rows.size());
+  std::vector<Eigen::Index> at_zero;
+  for (std::size_t a = 0; a < rows.size();) {
+    std::size_t b = a;
+    while (b < rows.size() && problem.group(rows[b]) == problem.group(rows[a]))
+      ++b;
+    const auto rank = static_cast<std::size_t>(problem.group_rank(rows[a]));
+    const std::size_t first = kept.size();
+    at_zero.clear();
+    for (std::size_t k = a; k < b; ++k)
+      (z(rows[k]) > 0.0 ? kept : at_zero).push_back(rows[k]);
+    const std::size_t positive = kept.size() - first;
+    const bool limit = b - a > rank && (positive < rank || !settled);
+    if (limit)
+      std::sort(at_zero.begin(), at_zero.end(), [&](Eigen::Index x, Eigen::Index y) {
+        return w(x) < w(y) || (w(x) == w(y) && x < y);
+      });
+    const std::size_t join = limit ? (positive < rank ? rank - positive : 0) : at_zero.size();
+    kept.insert(kept.end(), at_zero.begin(),
+                at_zero.begin() + static_cast<std::ptrdiff_t>(std::min(join, at_zero.size())));
+    std::sort(kept.begin() + static_cast<std::ptrdiff_t>(first), kept.end());
+    a = b;
+  }
+  rows = std::move(kept);
+}
 
 // Projected Newton on the quadratic program of a symmetric LCP (Bertsekas 1982), the block rule
 // made monotone: from z >= 0, the free rows F are those with z_i > 0 or w_i < 0; the Newton
@@ -241,9 +280,10 @@ constexpr double kSmallestDamping = 1e-6;
 // max(0, z + t (z_N - z)), t = 1, 1/2, ..., to the first point that lowers the objective
 // enough. The direction descends: on F it is -M_FF^-1 w_F, and the rows the projection clips
 // have w_i < 0 and d_i < 0, which only steepens the path. So no active set comes back, where the
-// block rule can swap tens of rows forever near a limit load. A group with more free rows than
-// its rank, or a singular block that is no mechanism, is damped (a proximal step), which keeps
-// the descent. `at` is the start, z >= 0 measured by problem.result().
+// block rule can swap tens of rows forever near a limit load. A group's rows join F only up to
+// its rank, as a rule (keep_free_rows_within_group_rank); a group with more free rows than its
+// rank, or a singular block that is no mechanism, is damped (a proximal step), which keeps the
+// descent. `at` is the start, z >= 0 measured by problem.result().
 LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& options,
                            LcpResult at, int iteration, bool trace,
                            const ActiveSetLcp::Interrupt* interrupt) {
@@ -258,6 +298,8 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
   // The damping of every row once a block was singular and proved no collapse: kept (falling)
   // for the next steps, where each undamped try costs a failed factorization and a kernel search.
   double damp_all = 0.0;
+  // The last step went the whole way to a Newton point with no negative multiplier.
+  bool settled = false;
   // The caller's interrupt, if any, asked about the iterate `at` while it is not a solution.
   const auto interrupted = [&]() {
     return interrupt != nullptr && options.interrupt_after > 0 &&
@@ -272,7 +314,8 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
     for (Eigen::Index i = 0; i < n; ++i)
       if (z(i) > 0.0 || (at.w(i) < 0.0 && !held[static_cast<std::size_t>(i)]))
         rows.push_back(i);
-    // Damp the rows of the groups that have more free rows than their rank (consecutive here).
+    keep_free_rows_within_group_rank(problem, z, at.w, settled, rows);
+    // Damp the rows of the groups that still have more free rows than their rank (consecutive).
     ActiveSetEquations::Damping damping{
         Eigen::VectorXd::Zero(static_cast<Eigen::Index>(rows.size())), z};
     for (std::size_t a = 0; a < rows.size();) {
@@ -325,6 +368,7 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
       held[static_cast<std::size_t>(i)] = step.z(i) < 0.0 && z(i) == 0.0;
     if (taken == 1.0)
       damp_all = damp_all * 0.1 < kSmallestDamping ? 0.0 : damp_all * 0.1;
+    settled = taken == 1.0 && step.z.minCoeff() >= 0.0;
     if (trace)
       std::fprintf(stderr, "    newton %d |F| %zu damped %td step %g objective %.12g worst %g\n",
                    iteration, rows.size(), (damping.factor.array() > 0.0).count(), taken, f,
