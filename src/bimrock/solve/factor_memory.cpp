@@ -1,6 +1,7 @@
 #include <bimrock/solve/factor_memory.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -28,7 +29,7 @@ struct Registry {
   std::mutex mutex;
   std::unordered_map<void*, std::size_t> live;
   std::vector<Mapping> kept;
-  bool recycling = true;
+  std::atomic<bool> recycling{true};  // read before the lock: small blocks never take it
   FactorMemoryStats stats;
 };
 
@@ -173,9 +174,7 @@ void install_factor_memory() {
 void recycle_factor_memory(bool on) {
   if (!on)
     release_kept_factor_memory();
-  Registry& r = registry();
-  const std::lock_guard<std::mutex> lock(r.mutex);
-  r.recycling = on;
+  registry().recycling = on;
 }
 
 void release_kept_factor_memory() {
