@@ -260,14 +260,14 @@ void keep_free_rows_within_group_rank(const ActiveSetEquations& problem, const E
     for (std::size_t k = a; k < b; ++k)
       (z(rows[k]) > 0.0 ? kept : at_zero).push_back(rows[k]);
     const std::size_t positive = kept.size() - first;
-    const bool limit = b - a > rank && (positive < rank || !settled);
-    if (limit)
-      std::sort(at_zero.begin(), at_zero.end(), [&](Eigen::Index x, Eigen::Index y) {
-        return w(x) < w(y) || (w(x) == w(y) && x < y);
-      });
-    const std::size_t join = limit ? (positive < rank ? rank - positive : 0) : at_zero.size();
-    kept.insert(kept.end(), at_zero.begin(),
-                at_zero.begin() + static_cast<std::ptrdiff_t>(std::min(join, at_zero.size())));
+    auto join = static_cast<std::ptrdiff_t>(at_zero.size());  // all: damped below if beyond rank
+    if (b - a > rank && (positive < rank || !settled)) {
+      join = static_cast<std::ptrdiff_t>(positive < rank ? rank - positive : 0);
+      std::partial_sort(
+          at_zero.begin(), at_zero.begin() + join, at_zero.end(),
+          [&](Eigen::Index x, Eigen::Index y) { return w(x) < w(y) || (w(x) == w(y) && x < y); });
+    }
+    kept.insert(kept.end(), at_zero.begin(), at_zero.begin() + join);
     std::sort(kept.begin() + static_cast<std::ptrdiff_t>(first), kept.end());
     a = b;
   }
