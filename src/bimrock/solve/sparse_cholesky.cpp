@@ -14,6 +14,12 @@ namespace bimrock {
 
 namespace {
 
+// Frees a vector's memory (`v = {}` keeps its capacity: it assigns an empty initializer list).
+template <class Vector>
+void release(Vector& v) {
+  Vector().swap(v);
+}
+
 // A cholmod view of the Eigen matrix (no copy): stype -1 reads the lower triangle.
 cholmod_sparse view(const CholmodMatrix& a) {
   cholmod_sparse s{};
@@ -55,6 +61,12 @@ struct SparseCholesky::Impl {
   // From the second factorization of one analysis on, the matrix is scattered into that form
   // here, in one pass, and factorized as if its order were natural.
   std::int64_t factorizations_since_analysis = 0;
+  // analyze_last() builds that form at once and analyzes it in natural order: the analysis
+  // costs the same (CHOLMOD's four transposes give way to the permutation: 41 ms for K at 10^4
+  // blocks either way), and the first factorization reads it without CHOLMOD's transposes,
+  // then frees it (K and a region's S are factorized once per analysis). The plastic bench's
+  // condensations at 10^4 blocks: 1.30 -> 1.24 s (docs/performance.md, session 19).
+  bool release_after_first = false;
   std::vector<std::int64_t> permuted_p;  // tril(P A P^T): column starts, rows, values
   std::vector<std::int64_t> permuted_i;
   std::vector<double> permuted_x;
@@ -62,6 +74,13 @@ struct SparseCholesky::Impl {
   // The analyzed pattern's checksum: a matrix of another one is refused (CHOLMOD would
   // factorize it without notice, into a wrong factor).
   std::uint64_t analyzed_pattern = 0;
+
+  void release_permuted() {
+    release(scatter);
+    release(permuted_p);
+    release(permuted_i);
+    release(permuted_x);
+  }
 
   Impl() {
     install_factor_memory();  // before CHOLMOD's first block
@@ -157,16 +176,16 @@ std::vector<std::int64_t> expand_blocks(const std::vector<std::int64_t>& coarse,
 
 }  // namespace
 
-void SparseCholesky::analyze_given(const CholmodMatrix& lower, const std::int64_t* perm,
+void SparseCholesky::analyze_given(const cholmod_sparse_struct& matrix, const std::int64_t* perm,
                                    bool exact) {
-  cholmod_sparse a = view(lower);
+  cholmod_sparse a = matrix;
   cholmod_common& cm = impl_->common;
   const int saved_nmethods = cm.nmethods;
   const int saved_ordering = cm.method[0].ordering;
   const int saved_supernodal = cm.supernodal;
   const int saved_postorder = cm.postorder;
   cm.nmethods = 1;
-  cm.method[0].ordering = CHOLMOD_GIVEN;
+  cm.method[0].ordering = perm ? CHOLMOD_GIVEN : CHOLMOD_NATURAL;
   if (exact) {
     // Supernodal, and the order kept as it is: CHOLMOD would otherwise postorder its
     // elimination tree, which may move a leading column after trailing ones.
@@ -184,11 +203,9 @@ void SparseCholesky::finish_analysis(const CholmodMatrix& lower) {
   if (!impl_->factor)
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   impl_->factorizations_since_analysis = 0;
+  impl_->release_after_first = false;
   impl_->analyzed_pattern = pattern_checksum(lower);
-  impl_->scatter = {};  // released, not only emptied: the next pattern may be refactorized never
-  impl_->permuted_p = {};
-  impl_->permuted_i = {};
-  impl_->permuted_x = {};
+  impl_->release_permuted();  // not only emptied: the next pattern may be refactorized never
   n_ = lower.rows();
   analyzed_nonzeros_ = lower.nonZeros();
   factor_flops_ = impl_->common.fl;
@@ -218,7 +235,7 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
     // unknowns, and analyze the full matrix with that given ordering.
     const std::vector<std::int64_t> perm =
         expand_blocks(block_order(block_pattern(lower, block_size)), block_size);
-    analyze_given(lower, perm.data(), false);
+    analyze_given(view(lower), perm.data(), false);
   } else {
     cholmod_sparse a = view(lower);
     impl_->factor = cholmod_l_analyze(&a, &cm);
@@ -276,8 +293,30 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
     coarse.insert(coarse.end(), groups[g].begin(), groups[g].end());
   }
   order_ = expand_blocks(coarse, block_size);
-  analyze_given(lower, order_.data(), true);
+  n_ = lower.rows();
+  Impl& m = *impl_;
+  permute_into_order(lower, order_.data());  // analyzed as natural (see Impl)
+  cholmod_sparse permuted = view(lower);
+  permuted.p = m.permuted_p.data();
+  permuted.i = m.permuted_i.data();
+  permuted.x = m.permuted_x.data();
+  permuted.nzmax = m.permuted_x.size();
+  analyze_given(permuted, nullptr, true);
+  // The factor of tril(P A P^T) in natural order is that of A in the order P: it says so.
+  if (m.factor) {
+    std::copy(order_.begin(), order_.end(), static_cast<std::int64_t*>(m.factor->Perm));
+    m.factor->ordering = CHOLMOD_GIVEN;
+  }
+  auto p = std::move(m.permuted_p);
+  auto i = std::move(m.permuted_i);
+  auto x = std::move(m.permuted_x);
+  auto scatter = std::move(m.scatter);
   finish_analysis(lower);
+  m.permuted_p = std::move(p);
+  m.permuted_i = std::move(i);
+  m.permuted_x = std::move(x);
+  m.scatter = std::move(scatter);
+  m.release_after_first = true;
 }
 
 std::vector<std::int64_t> SparseCholesky::trailing_unknowns(int level) const {
@@ -361,9 +400,8 @@ CholmodMatrix SparseCholesky::schur_complement(const CholmodMatrix& lower, int l
   return s;
 }
 
-void SparseCholesky::permute_into_factor_order(const CholmodMatrix& lower) {
+void SparseCholesky::permute_into_order(const CholmodMatrix& lower, const std::int64_t* perm) {
   Impl& m = *impl_;
-  const auto* perm = static_cast<const std::int64_t*>(m.factor->Perm);
   const std::int64_t* outer = lower.outerIndexPtr();
   const std::int64_t* inner = lower.innerIndexPtr();
   const auto n = static_cast<std::size_t>(n_);
@@ -402,7 +440,7 @@ void SparseCholesky::permute_into_factor_order(const CholmodMatrix& lower) {
       source[at] = k;
     });
   }
-  inverse = {};
+  release(inverse);
   m.scatter.assign(static_cast<std::size_t>(lower.nonZeros()), -1);
   std::vector<std::pair<std::int64_t, std::int64_t>> column;  // (row, entry) of one column
   for (std::size_t c = 0; c < n; ++c) {
@@ -429,13 +467,14 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
   if (!lower.isCompressed() || lower.rows() != n_ || lower.nonZeros() != analyzed_nonzeros_ ||
       pattern_checksum(lower) != m.analyzed_pattern)
     throw std::logic_error("SparseCholesky::factorize: a pattern other than the analyzed one");
-  // From the second factorization of a supernodal analysis: the matrix in the factor's order,
-  // factorized as natural (no transposes; see Impl).
-  const bool permute =
-      m.factor->is_super && m.factor->Perm && ++m.factorizations_since_analysis >= 2;
+  // From the second factorization of a supernodal analysis (from the first after
+  // analyze_last()): the matrix in the factor's order, factorized as natural (no transposes;
+  // see Impl).
+  const bool permute = m.factor->is_super && m.factor->Perm &&
+                       (++m.factorizations_since_analysis >= 2 || !m.scatter.empty());
   if (permute) {
     if (m.scatter.empty())
-      permute_into_factor_order(lower);
+      permute_into_order(lower, static_cast<const std::int64_t*>(m.factor->Perm));
     const double* x = lower.valuePtr();
     for (std::size_t k = 0; k < m.scatter.size(); ++k)
       if (m.scatter[k] >= 0)
@@ -453,6 +492,10 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
     m.factor->ordering = CHOLMOD_NATURAL;
   cholmod_l_factorize(&a, impl_->factor, &impl_->common);
   m.factor->ordering = ordering;
+  if (m.release_after_first) {  // rebuilt by a second factorization, if one comes
+    m.release_after_first = false;
+    m.release_permuted();
+  }
   ++work_.factorizations;
   work_.factorize_seconds += seconds_since(start);
   if (impl_->common.status == CHOLMOD_OUT_OF_MEMORY)

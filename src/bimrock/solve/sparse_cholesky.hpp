@@ -11,6 +11,8 @@
 
 #include <bimrock/solve/spd_solver.hpp>
 
+struct cholmod_sparse_struct;
+
 namespace bimrock {
 
 using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>;
@@ -87,16 +89,18 @@ class SparseCholesky final : public SpdSolver {
 
  private:
   struct Impl;
-  /// Symbolic analysis with the given fill-reducing permutation; `exact`: kept exactly as
-  /// given (not postordered) and the factor supernodal, as schur_complement() needs.
-  void analyze_given(const CholmodMatrix& lower, const std::int64_t* perm, bool exact);
+  /// Symbolic analysis with the given fill-reducing permutation (null: the natural order);
+  /// `exact`: kept exactly as given (not postordered) and the factor supernodal, as
+  /// schur_complement() needs.
+  void analyze_given(const cholmod_sparse_struct& matrix, const std::int64_t* perm, bool exact);
   /// What every analysis ends with: the factor checked, its size and flops recorded.
   void finish_analysis(const CholmodMatrix& lower);
   /// The fill-reducing order of a block graph (CHOLMOD's default strategy), kept for the last
   /// pattern it was computed for.
   const std::vector<std::int64_t>& block_order(const CholmodMatrix& pattern);
-  /// The scatter of `lower`'s entries into tril(P lower P^T), P the factor's order (see Impl).
-  void permute_into_factor_order(const CholmodMatrix& lower);
+  /// tril(P lower P^T) for the order `perm` (the factor's, or analyze_last()'s), and the scatter
+  /// of `lower`'s entries into it (see Impl).
+  void permute_into_order(const CholmodMatrix& lower, const std::int64_t* perm);
   /// solve(b) for a b whose first `first` entries in the factor's order are zero.
   [[nodiscard]] Eigen::VectorXd solve_from(const Eigen::VectorXd& b, std::int64_t first) const;
 
