@@ -205,7 +205,6 @@ void SparseCholesky::finish_analysis(const CholmodMatrix& lower) {
   impl_->factorizations_since_analysis = 0;
   impl_->release_after_first = false;
   impl_->analyzed_pattern = pattern_checksum(lower);
-  impl_->release_permuted();  // not only emptied: the next pattern may be refactorized never
   n_ = lower.rows();
   analyzed_nonzeros_ = lower.nonZeros();
   factor_flops_ = impl_->common.fl;
@@ -226,6 +225,7 @@ void SparseCholesky::analyze(const CholmodMatrix& lower, int block_size) {
     throw std::logic_error("SparseCholesky: matrix must be compressed");
   if (impl_->factor)
     cholmod_l_free_factor(&impl_->factor, &impl_->common);
+  impl_->release_permuted();  // not only emptied: the new pattern may be refactorized never
   order_.clear();
   level_start_.clear();
   boundary_start_.clear();
@@ -252,6 +252,7 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
     throw std::logic_error("SparseCholesky::analyze_last: one level per block");
   if (impl_->factor)
     cholmod_l_free_factor(&impl_->factor, &impl_->common);
+  impl_->release_permuted();
   const CholmodMatrix pattern = block_pattern(lower, block_size);
   const std::int64_t nb = pattern.rows();
   const int top = nb > 0 ? *std::max_element(level.begin(), level.end()) : 0;
@@ -307,15 +308,7 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
     std::copy(order_.begin(), order_.end(), static_cast<std::int64_t*>(m.factor->Perm));
     m.factor->ordering = CHOLMOD_GIVEN;
   }
-  auto p = std::move(m.permuted_p);
-  auto i = std::move(m.permuted_i);
-  auto x = std::move(m.permuted_x);
-  auto scatter = std::move(m.scatter);
   finish_analysis(lower);
-  m.permuted_p = std::move(p);
-  m.permuted_i = std::move(i);
-  m.permuted_x = std::move(x);
-  m.scatter = std::move(scatter);
   m.release_after_first = true;
 }
 
