@@ -361,6 +361,13 @@ CholmodMatrix SparseCholesky::schur_complement(const CholmodMatrix& lower, int l
     for (Eigen::Index c = 0; c < g.cols(); ++c)  // the diagonal block's upper part is not L's
       for (Eigen::Index r = 0; r < g.rows() && rows[i0 + r] < j0 + c; ++r)
         g(r, c) = 0.0;
+    // Rows that are consecutive unknowns of B (most of them: B's own dense part) are updated in
+    // place; others through a product of their own, scattered.
+    const std::int64_t r0 = rows[i0] - b0;
+    if (rows[i1 - 1] - rows[i0] == i1 - i0 - 1) {
+      s_bb.block(r0, r0, g.rows(), g.rows()).selfadjointView<Eigen::Lower>().rankUpdate(g);
+      continue;
+    }
     Eigen::MatrixXd h = Eigen::MatrixXd::Zero(g.rows(), g.rows());
     h.selfadjointView<Eigen::Lower>().rankUpdate(g);
     for (Eigen::Index c = 0; c < h.cols(); ++c)
