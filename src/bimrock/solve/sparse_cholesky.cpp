@@ -66,7 +66,6 @@ struct SparseCholesky::Impl {
   // blocks either way), and the first factorization reads it without CHOLMOD's transposes,
   // then frees it (K and a region's S are factorized once per analysis). The plastic bench's
   // condensations at 10^4 blocks: 1.30 -> 1.24 s (docs/performance.md, session 19).
-  bool release_after_first = false;
   std::vector<std::int64_t> permuted_p;  // tril(P A P^T): column starts, rows, values
   std::vector<std::int64_t> permuted_i;
   std::vector<double> permuted_x;
@@ -203,7 +202,6 @@ void SparseCholesky::finish_analysis(const CholmodMatrix& lower) {
   if (!impl_->factor)
     throw std::runtime_error("CHOLMOD analyze failed (out of memory?)");
   impl_->factorizations_since_analysis = 0;
-  impl_->release_after_first = false;
   impl_->analyzed_pattern = pattern_checksum(lower);
   n_ = lower.rows();
   analyzed_nonzeros_ = lower.nonZeros();
@@ -303,13 +301,10 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
   permuted.x = m.permuted_x.data();
   permuted.nzmax = m.permuted_x.size();
   analyze_given(permuted, nullptr, true);
-  // The factor of tril(P A P^T) in natural order is that of A in the order P: it says so.
-  if (m.factor) {
-    std::copy(order_.begin(), order_.end(), static_cast<std::int64_t*>(m.factor->Perm));
-    m.factor->ordering = CHOLMOD_GIVEN;
-  }
   finish_analysis(lower);
-  m.release_after_first = true;
+  // The factor of tril(P A P^T) in natural order is that of A in the order P: it says so.
+  std::copy(order_.begin(), order_.end(), static_cast<std::int64_t*>(m.factor->Perm));
+  m.factor->ordering = CHOLMOD_GIVEN;
 }
 
 std::vector<std::int64_t> SparseCholesky::trailing_unknowns(int level) const {
@@ -470,8 +465,9 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
   // From the second factorization of a supernodal analysis (from the first after
   // analyze_last()): the matrix in the factor's order, factorized as natural (no transposes;
   // see Impl).
-  const bool permute = m.factor->is_super && m.factor->Perm &&
-                       (++m.factorizations_since_analysis >= 2 || !m.scatter.empty());
+  const bool prebuilt = m.factorizations_since_analysis == 0 && !m.scatter.empty();
+  const bool permute =
+      m.factor->is_super && m.factor->Perm && (++m.factorizations_since_analysis >= 2 || prebuilt);
   if (permute) {
     if (m.scatter.empty())
       permute_into_order(lower, static_cast<const std::int64_t*>(m.factor->Perm));
@@ -492,10 +488,8 @@ bool SparseCholesky::factorize(const CholmodMatrix& lower) {
     m.factor->ordering = CHOLMOD_NATURAL;
   cholmod_l_factorize(&a, impl_->factor, &impl_->common);
   m.factor->ordering = ordering;
-  if (m.release_after_first) {  // rebuilt by a second factorization, if one comes
-    m.release_after_first = false;
+  if (prebuilt)  // rebuilt by a second factorization, if one comes
     m.release_permuted();
-  }
   ++work_.factorizations;
   work_.factorize_seconds += seconds_since(start);
   if (impl_->common.status == CHOLMOD_OUT_OF_MEMORY)
