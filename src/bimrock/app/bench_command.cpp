@@ -221,18 +221,26 @@ struct Row {
   std::map<std::string, double> peak_bytes;  // the largest over the repetitions
   double total = 0.0, limit = 0.0, run_peak = 0.0, limit_peak = 0.0;
   double oracle = 0.0;  ///< median whole analysis of the oracle's replays (0: not run)
+  /// The oracle's median seconds per phase (empty: not run): where the floor's time goes.
+  std::map<std::string, double> oracle_seconds;
 };
 
-Row summarize(const std::string& model, const std::vector<Run>& runs) {
-  Row row{model, runs.front(), {}, {}, 0, 0, 0, 0, 0};
+// Median seconds per phase over the runs, in the first run's order.
+std::vector<std::pair<std::string, double>> median_phases(const std::vector<Run>& runs) {
+  std::vector<std::pair<std::string, double>> out;
   for (const auto& [phase, s0] : runs.front().seconds) {
     std::vector<double> v;
     for (const Run& r : runs)
       for (const auto& [p, s] : r.seconds)
         if (p == phase)
           v.push_back(s);
-    row.median_seconds.emplace_back(phase, median(v));
+    out.emplace_back(phase, median(v));
   }
+  return out;
+}
+
+Row summarize(const std::string& model, const std::vector<Run>& runs) {
+  Row row{model, runs.front(), median_phases(runs), {}, 0, 0, 0, 0, 0, {}};
   std::vector<double> totals, limits;
   for (const Run& r : runs) {
     totals.push_back(total_without_writing(r));
@@ -261,12 +269,18 @@ void print_row(const Row& r) {
         r.first.yield_points, r.first.increments, r.first.lcp_rows_max,
         r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.regions,
         r.first.reserve_switches, r.first.zone_blocks);
-  fmt::print("\n  {:<34} {:>10} {:>10}\n", "phase", "median s", "RSS peak");
+  const bool oracle = !r.oracle_seconds.empty();
+  fmt::print("\n  {:<34} {:>10} {:>10}{}\n", "phase", "median s", "RSS peak",
+             oracle ? fmt::format(" {:>10}", "oracle s") : "");
   for (const auto& [phase, s] : r.median_seconds) {
     const auto peak = r.peak_bytes.find(phase);
+    const auto o = r.oracle_seconds.find(phase);
     fmt::print(
-        "  {:<34} {:>10.3f} {:>10}\n", phase, s,
-        peak == r.peak_bytes.end() ? std::string("-") : fmt::format("{:.0f}", mib(peak->second)));
+        "  {:<34} {:>10.3f} {:>10}{}\n", phase, s,
+        peak == r.peak_bytes.end() ? std::string("-") : fmt::format("{:.0f}", mib(peak->second)),
+        !oracle                       ? ""
+        : o == r.oracle_seconds.end() ? fmt::format(" {:>10}", "-")
+                                      : fmt::format(" {:>10.3f}", o->second));
   }
   fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "whole analysis (without writing)", r.total,
              mib(r.run_peak));
@@ -287,6 +301,8 @@ nlohmann::json to_json(const Row& r) {
     nlohmann::json p = {{"phase", phase}, {"median_seconds", s}};
     if (const auto peak = r.peak_bytes.find(phase); peak != r.peak_bytes.end())
       p["peak_bytes"] = peak->second;
+    if (const auto o = r.oracle_seconds.find(phase); o != r.oracle_seconds.end())
+      p["oracle_median_seconds"] = o->second;
     phases.push_back(p);
   }
   return {{"model", r.model},
@@ -370,11 +386,15 @@ int run_bench(const BenchOptions& options) {
       rows.push_back(summarize(model, runs));
       if (oracle) {
         hints.mode = TrialHints::Mode::replay;
+        std::vector<Run> replays;
         std::vector<double> totals;
-        for (int rep = 0; rep < options.repetitions; ++rep)
-          totals.push_back(
-              total_without_writing(run_plastic(n, options.increments, scratch, &hints)));
+        for (int rep = 0; rep < options.repetitions; ++rep) {
+          replays.push_back(run_plastic(n, options.increments, scratch, &hints));
+          totals.push_back(total_without_writing(replays.back()));
+        }
         rows.back().oracle = median(totals);
+        for (const auto& [phase, s] : median_phases(replays))
+          rows.back().oracle_seconds[phase] = s;
       }
       print_row(rows.back());
       std::fflush(stdout);
