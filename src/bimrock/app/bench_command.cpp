@@ -221,7 +221,7 @@ struct Row {
   std::map<std::string, double> peak_bytes;  // the largest over the repetitions
   double total = 0.0, limit = 0.0, run_peak = 0.0, limit_peak = 0.0;
   double oracle = 0.0;  ///< median whole analysis of the oracle's replays (0: not run)
-  /// The oracle's median seconds per phase (empty: not run): where the floor's time goes.
+  /// The oracle's median seconds per phase: where the floor's time goes.
   std::map<std::string, double> oracle_seconds;
 };
 
@@ -269,7 +269,7 @@ void print_row(const Row& r) {
         r.first.yield_points, r.first.increments, r.first.lcp_rows_max,
         r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.regions,
         r.first.reserve_switches, r.first.zone_blocks);
-  const bool oracle = !r.oracle_seconds.empty();
+  const bool oracle = r.oracle > 0.0;
   fmt::print("\n  {:<34} {:>10} {:>10}{}\n", "phase", "median s", "RSS peak",
              oracle ? fmt::format(" {:>10}", "oracle s") : "");
   for (const auto& [phase, s] : r.median_seconds) {
@@ -387,14 +387,12 @@ int run_bench(const BenchOptions& options) {
       if (oracle) {
         hints.mode = TrialHints::Mode::replay;
         std::vector<Run> replays;
-        std::vector<double> totals;
-        for (int rep = 0; rep < options.repetitions; ++rep) {
+        for (int rep = 0; rep < options.repetitions; ++rep)
           replays.push_back(run_plastic(n, options.increments, scratch, &hints));
-          totals.push_back(total_without_writing(replays.back()));
-        }
-        rows.back().oracle = median(totals);
-        for (const auto& [phase, s] : median_phases(replays))
-          rows.back().oracle_seconds[phase] = s;
+        const Row replayed = summarize(model, replays);
+        rows.back().oracle = replayed.total;
+        rows.back().oracle_seconds = {replayed.median_seconds.begin(),
+                                      replayed.median_seconds.end()};
       }
       print_row(rows.back());
       std::fflush(stdout);
