@@ -3,7 +3,7 @@
 
 DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
   libeigen3-dev libsuitesparse-dev libcgal-dev libyaml-cpp-dev libcli11-dev libfmt-dev \
-  nlohmann-json3-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev \
+  nlohmann-json3-dev libglpk-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libopenblas0-pthread python3-meshio python3-numpy
 # Optional peers the benchmarks compare with, installed by `make bench` only (bench/CMakeLists.txt
 # builds without them): Siconos Numerics' LCP solvers.

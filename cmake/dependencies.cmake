@@ -18,3 +18,12 @@ set_target_properties(SuiteSparse::CHOLMOD PROPERTIES
   IMPORTED_LOCATION "${CHOLMOD_LIBRARY}"
   INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}"
   INTERFACE_LINK_LIBRARIES "${SUITESPARSECONFIG_LIBRARY}")
+
+# GLPK (GPL-3.0-or-later) solves the linear programs of the complete LCP method
+# (solve/lcp_polyhedron.cpp); Debian 12 ships no CMake package for it.
+find_path(GLPK_INCLUDE_DIR glpk.h REQUIRED)
+find_library(GLPK_LIBRARY glpk REQUIRED)
+add_library(GLPK::GLPK UNKNOWN IMPORTED)
+set_target_properties(GLPK::GLPK PROPERTIES
+  IMPORTED_LOCATION "${GLPK_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${GLPK_INCLUDE_DIR}")

@@ -20,6 +20,7 @@
 #include <bimrock/assembly/kinematics.hpp>
 #include <bimrock/assembly/yield_values.hpp>
 #include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/branch_and_bound_lcp.hpp>
 #include <bimrock/solve/factor_memory.hpp>
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/reduced_tangent.hpp>
@@ -86,6 +87,7 @@ struct LcpSolvers {
   std::unique_ptr<CondensedStiffness> condensed;  // S: the LCP's stiffness (or K itself)
   ActiveSetLcp active_set;
   Lemke lemke;
+  BranchAndBoundLcp complete;  // decides any LCP: the last resort (branch_and_bound_lcp.hpp)
   std::optional<FlexibilityColumns> columns;  // S^-1 phi_r of the rows that were ever active
   std::optional<TangentFactor> tangent;       // the reduced tangent (analysis and last factor)
   std::set<std::pair<int, int>> last_active;  // (point, mode) yielding in the last increment
@@ -389,6 +391,7 @@ struct Trial {
   int pivots = 0;
   int active_set_iterations = 0;
   int tangent_factorizations = 0;
+  int search_nodes = 0;  // LPs of the complete method (branch_and_bound_lcp.hpp)
   int rounds = 0;
 };
 
@@ -766,9 +769,20 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
                        to_string(r.status), r.steps);
       }
       if (r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
-        // Lemke on the whole matrix: it decides a collapse that no certificate has proven.
-        r = solvers.lemke.solve(lcp.dense());
+        // Lemke on the whole matrix, then the complete method: Lemke decides an LCP only for
+        // copositive-plus M, and on the degenerate LCPs of cohesionless joints and of
+        // non-associated flow it can end on a ray that proves nothing. Branch and bound on the
+        // pairs decides every LCP: a solution, or a proof that there is none.
+        const LcpProblem dense = lcp.dense();
+        r = solvers.lemke.solve(dense);
         t.pivots += r.steps;
+        if (r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
+          r = solvers.complete.solve(dense);
+          t.search_nodes += r.steps;
+          if (std::getenv("BIMROCK_DEBUG_LCP"))
+            std::fprintf(stderr, "  branch and bound on %d rows: %s, %d nodes\n", m,
+                         to_string(r.status), r.steps);
+        }
       }
       clock.lap("increments: LCP", "increments: K^-1 Phi columns",
                 columns.seconds() - columns_before);
@@ -1039,7 +1053,13 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         proven = carried + failing_step;
         aim = t.proven_fraction < 1.0;
       }
-      for (int b = 0; b < opt.max_bisections && remaining > 0.0; ++b) {
+      // A structure proven to fail within the bracket tolerance of its first load, with nothing
+      // carried, is unstable under that load: bisecting towards zero load would only bracket
+      // round-off.
+      const auto unstable_at_start = [&] {
+        return st == 0 && result.history.empty() && proven && *proven <= opt.bracket_tolerance;
+      };
+      for (int b = 0; b < opt.max_bisections && remaining > 0.0 && !unstable_at_start(); ++b) {
         const double upper = proven ? *proven : carried + failing_step;
         if (std::abs(upper - carried) <= opt.bracket_tolerance * std::abs(upper))
           break;
@@ -1078,6 +1098,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         return with_solver_work(std::move(result), k, solvers);
       }
       result.collapse = describe_collapse(st, carried, *proven, &failure, last ? &*last : nullptr);
+      result.collapse->unstable_at_first_load = unstable_at_start();
       return with_solver_work(std::move(result), k, solvers);
     }
   }

@@ -132,6 +132,10 @@ struct Collapse {
   double failed = 0.0;
   std::vector<MechanismEntry> mechanism;
   Eigen::VectorXd direction;  ///< displacement increment of the last carried step, unit norm
+  /// Nothing of the first stage could be carried: the structure is proven to fail under a
+  /// fraction of its first load no larger than the bracket tolerance (e.g. a cohesionless arch
+  /// thinner than its least thickness under its own weight). `failed` is that fraction.
+  bool unstable_at_first_load = false;
 };
 
 /// The analysis stopped before the end of its stages without a proven collapse: an increment

@@ -60,9 +60,15 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
     Vec2 load = Vec2::Zero();
     for (const PointLoad& p : stage.loads.points)
       load += p.force;
-    fmt::print("COLLAPSE in stage '{}': carried factor {:.6f}, failed at {:.6f}", stage.name,
-               c.carried, c.failed);
-    if (load.norm() > 0.0)
+    if (c.unstable_at_first_load)
+      fmt::print(
+          "UNSTABLE under the first load of stage '{}': no equilibrium from factor {:.3g} of it "
+          "on",
+          stage.name, c.failed);
+    else
+      fmt::print("COLLAPSE in stage '{}': carried factor {:.6f}, failed at {:.6f}", stage.name,
+                 c.carried, c.failed);
+    if (load.norm() > 0.0 && !c.unstable_at_first_load)
       fmt::print(" (point load between {:.6g} N and {:.6g} N)", c.carried * load.norm(),
                  c.failed * load.norm());
     fmt::print("; {} yield modes in the mechanism (summary.json, collapse.png)\n",

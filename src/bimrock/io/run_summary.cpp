@@ -108,6 +108,7 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                        {"failed_factor", c.failed},
                        {"carried_point_load_N", c.carried * load},
                        {"failed_point_load_N", c.failed * load},
+                       {"unstable_at_first_load", c.unstable_at_first_load},
                        {"mechanism", mechanism_json(plastic->points, c)}};
     } else {
       j["collapse"] = nullptr;

@@ -1,0 +1,51 @@
+#pragma once
+/// @file A complete method for the LCP of any matrix: depth-first branch and bound on the
+/// complementarity of the pairs (z_i, w_i) over the polyhedron {z >= 0, w = M z + q >= 0}
+/// (lcp_polyhedron.hpp), the enumerative method of Judice and Faustino (1988) with linear
+/// programs at its nodes.
+///
+/// A node holds some z_i = 0 and some w_i = 0. Its LP is either empty (no solution below it) or
+/// gives a vertex; a vertex with z_i w_i = 0 on every row is a solution (polished, and checked
+/// on the whole problem); otherwise the pair with the largest min(z_i, w_i) (each relative to
+/// its own scale) is branched: w_i = 0 (the row active) first where z_i is the larger, else
+/// z_i = 0 first. Every solution lies below one leaf, so a search in which every node ends
+/// empty proves that the LCP has no solution; an empty root gives, by Farkas' lemma, a
+/// certificate r >= 0 with M^T r <= 0 and q . r < 0.
+///
+/// Lemke's method decides an LCP only for copositive-plus M: for non-associated flow
+/// (M = N - C K^-1 Phi not symmetric) its secondary ray proves nothing, and on the degenerate
+/// LCPs of cohesionless joints (every point at the apex of its yield surface, dependent rows,
+/// opposite slip flows whose columns cancel) it ends on such a ray although a solution exists.
+/// This method decides every LCP, in a number of nodes that can grow as 2^n: the analysis calls
+/// it last, on LCPs of at most max_size rows, within max_nodes.
+#include <utility>
+
+#include <bimrock/solve/lcp.hpp>
+
+namespace bimrock {
+
+struct BranchAndBoundOptions {
+  /// Nodes (LPs) before the search gives up (iteration_limit).
+  int max_nodes = 20000;
+  /// Larger LCPs are not searched (iteration_limit): each node is an LP of this size.
+  Eigen::Index max_size = 1000;
+  /// A solution must satisfy LcpResiduals::worst_relative() <= accuracy.
+  double accuracy = 1e-9;
+};
+
+class BranchAndBoundLcp final : public LcpSolver {
+ public:
+  explicit BranchAndBoundLcp(BranchAndBoundOptions options = {}) : options_(std::move(options)) {}
+  [[nodiscard]] std::string name() const override { return "branch-and-bound"; }
+  /// solved; no_solution when the search proves there is none (with the Farkas certificate as
+  /// the ray where the root LP is empty, without a ray where every leaf is); iteration_limit
+  /// past max_nodes or max_size; numerical_failure where an LP failed and left the search
+  /// incomplete. `steps` counts the nodes. The warm start is ignored.
+  [[nodiscard]] LcpResult solve(const LcpProblem& problem,
+                                const Eigen::VectorXd* warm_start = nullptr) override;
+
+ private:
+  BranchAndBoundOptions options_;
+};
+
+}  // namespace bimrock

@@ -1,0 +1,183 @@
+#include <bimrock/solve/lcp_polyhedron.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <glpk.h>
+
+namespace bimrock {
+namespace {
+
+using Index = Eigen::Index;
+
+/// How far a w_i held at zero may stray from it, in the scaled units (max|M| = max|q| = 1).
+constexpr double kHeldSlack = 1e-9;
+
+/// Simplex settings: quiet, no presolve (it would discard the basis a child node starts from),
+/// an iteration budget that a well-posed LP of this size never needs.
+glp_smcp simplex_settings(Index n) {
+  glp_smcp parm;
+  glp_init_smcp(&parm);
+  parm.msg_lev = GLP_MSG_OFF;
+  parm.presolve = GLP_OFF;
+  parm.meth = GLP_PRIMAL;
+  parm.it_lim = static_cast<int>(std::min<Index>(100 * n + 1000, 1'000'000));
+  return parm;
+}
+
+/// Silences GLPK's terminal output while it lives (its scaling and basis routines print
+/// whatever the simplex's message level says), and restores the caller's setting.
+class QuietGlpk {
+ public:
+  QuietGlpk() : old_(glp_term_out(GLP_OFF)) {}
+  QuietGlpk(const QuietGlpk&) = delete;
+  QuietGlpk& operator=(const QuietGlpk&) = delete;
+  ~QuietGlpk() { glp_term_out(old_); }
+
+ private:
+  int old_;
+};
+
+/// Solves p from its current basis by the primal simplex; where that fails (a degenerate LP
+/// can stall it to its iteration limit, or round-off spoil its basis), by the dual simplex from
+/// a fresh basis, and last in exact rational arithmetic (glp_exact). False if all fail.
+bool simplex(glp_prob* p, Index n) {
+  glp_smcp parm = simplex_settings(n);
+  if (glp_simplex(p, &parm) == 0)
+    return true;
+  glp_adv_basis(p, 0);
+  parm.meth = GLP_DUALP;
+  if (glp_simplex(p, &parm) == 0)
+    return true;
+  glp_std_basis(p);
+  return glp_exact(p, &parm) == 0;
+}
+
+/// GLPK's problem object, released with its owner.
+struct GlpProb {
+  glp_prob* p = glp_create_prob();
+  GlpProb() = default;
+  GlpProb(const GlpProb&) = delete;
+  GlpProb& operator=(const GlpProb&) = delete;
+  ~GlpProb() { glp_delete_prob(p); }
+};
+
+/// Loads the dense matrix a (rows x cols) into p, whose rows and columns exist already.
+void load_dense(glp_prob* p, const Eigen::MatrixXd& a) {
+  std::vector<int> ia{0};
+  std::vector<int> ja{0};
+  std::vector<double> ar{0.0};
+  for (Index j = 0; j < a.cols(); ++j)
+    for (Index i = 0; i < a.rows(); ++i)
+      if (a(i, j) != 0.0) {
+        ia.push_back(static_cast<int>(i + 1));
+        ja.push_back(static_cast<int>(j + 1));
+        ar.push_back(a(i, j));
+      }
+  glp_load_matrix(p, static_cast<int>(ar.size() - 1), ia.data(), ja.data(), ar.data());
+}
+
+}  // namespace
+
+struct LcpPolyhedron::Lp {
+  GlpProb prob;
+  Eigen::MatrixXd m;  ///< M / max|M|
+  Eigen::VectorXd q;  ///< q / max|q|
+};
+
+LcpPolyhedron::LcpPolyhedron(const LcpProblem& problem)
+    : problem_(problem), lp_(std::make_unique<Lp>()) {
+  const QuietGlpk quiet;
+  check_lcp(problem);
+  const Index n = problem.size();
+  m_max_ = n > 0 ? problem.m.cwiseAbs().maxCoeff() : 1.0;
+  q_max_ = n > 0 ? problem.q.cwiseAbs().maxCoeff() : 1.0;
+  if (!(m_max_ > 0.0))
+    m_max_ = 1.0;
+  if (!(q_max_ > 0.0))
+    q_max_ = 1.0;
+  lp_->m = problem.m / m_max_;
+  lp_->q = problem.q / q_max_;
+  glp_prob* p = lp_->prob.p;
+  glp_set_obj_dir(p, GLP_MIN);
+  if (n == 0)
+    return;
+  glp_add_rows(p, static_cast<int>(n));  // row i: (M z)_i = w_i - q_i
+  glp_add_cols(p, static_cast<int>(n));  // column j: z_j
+  load_dense(p, lp_->m);
+  // Objective: the sum of every z_j and w_i (w = M z + q, its constant dropped). Both of a
+  // pair are pulled towards zero, and since only bounds change from node to node, the last
+  // node's optimal basis stays dual feasible: the dual simplex goes on from it.
+  const Eigen::VectorXd cost = lp_->m.colwise().sum().transpose() + Eigen::VectorXd::Ones(n);
+  for (Index j = 0; j < n; ++j)
+    glp_set_obj_coef(p, static_cast<int>(j + 1), cost(j));
+  glp_adv_basis(p, 0);
+}
+
+LcpPolyhedron::~LcpPolyhedron() = default;
+
+LcpPolyhedron::Vertex LcpPolyhedron::vertex(const std::vector<Fix>& fix) {
+  const Index n = problem_.size();
+  if (static_cast<Index>(fix.size()) != n)
+    throw std::invalid_argument("LcpPolyhedron: one fix per row");
+  if (n == 0)
+    return {Status::feasible, Eigen::VectorXd()};
+  const QuietGlpk quiet;
+  glp_prob* p = lp_->prob.p;
+  for (Index i = 0; i < n; ++i) {
+    const Fix f = fix[static_cast<std::size_t>(i)];
+    const int k = static_cast<int>(i + 1);
+    // w_i = 0 up to kHeldSlack: the rows of one yield point are dependent, and the round-off
+    // of M leaves a set of them held at zero slightly inconsistent (the simplex then calls the
+    // node empty); the solution is made exact by the polish.
+    glp_set_row_bnds(p, k, f == Fix::w ? GLP_DB : GLP_LO, -lp_->q(i), -lp_->q(i) + kHeldSlack);
+    glp_set_col_bnds(p, k, f == Fix::z ? GLP_FX : GLP_LO, 0.0, 0.0);
+  }
+  if (!simplex(p, n))
+    return {Status::failed, {}};
+  const int status = glp_get_status(p);
+  if (status == GLP_NOFEAS)
+    return {Status::empty, {}};
+  if (status != GLP_OPT && status != GLP_FEAS)
+    return {Status::failed, {}};
+  Eigen::VectorXd z(n);
+  for (Index j = 0; j < n; ++j)
+    z(j) = std::max(0.0, glp_get_col_prim(p, static_cast<int>(j + 1)));
+  return {Status::feasible, z * (q_max_ / m_max_)};
+}
+
+std::optional<Eigen::VectorXd> LcpPolyhedron::certificate() const {
+  const Index n = problem_.size();
+  if (n == 0)
+    return std::nullopt;
+  // r >= 0 with (M^T r)_j <= 0 for every j and q . r = -1; the least sum of r.
+  const QuietGlpk quiet;
+  GlpProb lp;
+  glp_prob* p = lp.p;
+  glp_set_obj_dir(p, GLP_MIN);
+  glp_add_rows(p, static_cast<int>(n + 1));
+  glp_add_cols(p, static_cast<int>(n));
+  Eigen::MatrixXd a(n + 1, n);
+  a.topRows(n) = lp_->m.transpose();
+  a.row(n) = lp_->q.transpose();
+  load_dense(p, a);
+  for (Index j = 0; j < n; ++j) {
+    glp_set_row_bnds(p, static_cast<int>(j + 1), GLP_UP, 0.0, 0.0);
+    glp_set_col_bnds(p, static_cast<int>(j + 1), GLP_LO, 0.0, 0.0);
+    glp_set_obj_coef(p, static_cast<int>(j + 1), 1.0);
+  }
+  glp_set_row_bnds(p, static_cast<int>(n + 1), GLP_FX, -1.0, -1.0);
+  glp_adv_basis(p, 0);
+  if (!simplex(p, n) || glp_get_status(p) != GLP_OPT)
+    return std::nullopt;
+  Eigen::VectorXd r(n);
+  for (Index j = 0; j < n; ++j)
+    r(j) = std::max(0.0, glp_get_col_prim(p, static_cast<int>(j + 1)));
+  const double top = r.maxCoeff();
+  if (!(top > 0.0))
+    return std::nullopt;
+  return Eigen::VectorXd(r / top);
+}
+
+}  // namespace bimrock

@@ -1,0 +1,57 @@
+#pragma once
+/// @file The feasible set of an LCP as a linear program: the polyhedron
+/// {z >= 0, w = M z + q >= 0}, with chosen z_i or w_i held at zero, solved by GLPK's simplex.
+///
+/// A vertex of it with z_i w_i = 0 on every row is a solution of the LCP, and every solution
+/// lies in it, so the polyhedron is what a complete method searches (branch_and_bound_lcp.hpp).
+/// Where it is empty, Farkas' lemma gives r >= 0 with M^T r <= 0 and q . r < 0: a proof that
+/// no z >= 0 makes w >= 0 (in the analysis: no plastic flow along the flow rule's directions
+/// brings the stresses of the increment within every yield function).
+///
+/// The LP is built once, scaled so that max|M| = max|q| = 1 (z in units of max|q| / max|M|),
+/// and each solve starts from the last basis: a depth-first search moves between neighbouring
+/// nodes. GLPK's own scaling is not used: on the degenerate LCPs of cohesionless joints (rank
+/// 6 of 18) it made the simplex call feasible nodes empty, which the same LP unscaled, and the
+/// exact rational simplex, found feasible.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <bimrock/solve/lcp.hpp>
+
+namespace bimrock {
+
+class LcpPolyhedron {
+ public:
+  /// What is held at zero on one row.
+  enum class Fix : char { none, z, w };
+  enum class Status { feasible, empty, failed };
+  struct Vertex {
+    Status status = Status::failed;
+    Eigen::VectorXd z;  ///< for feasible: a vertex, in the problem's own units
+  };
+
+  explicit LcpPolyhedron(const LcpProblem& problem);
+  ~LcpPolyhedron();
+  LcpPolyhedron(const LcpPolyhedron&) = delete;
+  LcpPolyhedron& operator=(const LcpPolyhedron&) = delete;
+
+  /// A vertex with the rows held as `fix` says (one entry per row), the one of least
+  /// sum of z_i + w_i over the free rows (in the scaled units): the objective pulls both of a
+  /// pair towards zero. `failed` where the simplex gave up (round-off).
+  [[nodiscard]] Vertex vertex(const std::vector<Fix>& fix);
+
+  /// A Farkas certificate that the polyhedron (nothing held) is empty: r >= 0, |r|_inf = 1,
+  /// M^T r <= 0, q . r < 0, as the LP found it (the caller checks it with
+  /// certifies_infeasibility).
+  [[nodiscard]] std::optional<Eigen::VectorXd> certificate() const;
+
+ private:
+  struct Lp;
+  const LcpProblem& problem_;
+  double m_max_ = 1.0;
+  double q_max_ = 1.0;
+  std::unique_ptr<Lp> lp_;
+};
+
+}  // namespace bimrock
