@@ -12,8 +12,9 @@ inline std::string limit_message(double estimate, double limit, const std::strin
                                  const std::string& what, const std::string& advice) {
   std::ostringstream s;
   s.precision(3);
-  s << "would generate about " << estimate << ' ' << what << ", more than limits." << key << " = "
-    << limit << ": " << advice << ", or raise the limit (limits: {" << key << ": ...})";
+  s << "would generate about " << estimate << ' ' << what << ", more than limits." << key << " = ";
+  s.precision(10);
+  s << limit << ": " << advice << ", or raise the limit (limits: {" << key << ": ...})";
   return s.str();
 }
 
