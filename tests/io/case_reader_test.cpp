@@ -548,6 +548,42 @@ TEST(CaseReaderErrors, MoreThanOneDocumentIsRejected) {
   EXPECT_THAT(f.message, HasSubstr("more than one YAML document"));
 }
 
+TEST(CaseReaderErrors, ASecondDocumentAfterAnEndMarkerIsRejected) {
+  const Failure f = error_of(kMinimal + "...\n# a comment\nschema: 1\n");
+  EXPECT_EQ(f.line, 10);
+  EXPECT_THAT(f.message, HasSubstr("more than one YAML document"));
+}
+
+TEST(CaseReaderErrors, ALeadingDocumentMarkerIsOneDocument) {
+  EXPECT_NO_THROW(read_case_string("%YAML 1.2\n---\n" + kMinimal + "...\n# end\n", "c.yaml"));
+}
+
+TEST(CaseReaderErrors, AFileOfOnlyACommaIsMalformed) {
+  // yaml-cpp 0.7's LoadAll never returns on this input; the reader must not call it.
+  const Failure f = error_of("# a comment\n,\n");
+  EXPECT_EQ(f.line, 2);
+  EXPECT_THAT(f.message, HasSubstr("malformed YAML"));
+}
+
+TEST(CaseReaderErrors, TextThatIsNotUtf8IsNamed) {
+  const Failure f = error_of(
+      "schema: 1\ntitle: \"Mauer \xFC"
+      "ber Fels\"\n" +
+      kMinimal.substr(10));
+  EXPECT_EQ(f.line, 2);
+  EXPECT_EQ(f.item, "title");
+  EXPECT_THAT(f.message, HasSubstr("not valid UTF-8 (byte 0xFC at position 7)"));
+  // Well-formed UTF-8 (u-umlaut as 0xC3 0xBC) is read as written.
+  const Case c = read_case_string(
+      "schema: 1\ntitle: \"Mauer \xC3\xBC"
+      "ber Fels\"\n" +
+          kMinimal.substr(10),
+      "case.yaml");
+  EXPECT_EQ(c.spec.title,
+            "Mauer \xC3\xBC"
+            "ber Fels");
+}
+
 TEST(CaseReaderErrors, UnreadableFileIsNamedWithLineZero) {
   const std::string missing = "/nonexistent/bimrock/case.yaml";
   try {

@@ -66,7 +66,19 @@ void check_supports(const Model& model) {
     const int g = groups.find(f.block_i);
     const Vec2& c = model.blocks[f.block_i].centroid;
     const Eigen::Matrix<double, 6, 3> r = rigid_modes(c, model.blocks[g].centroid);
-    held[g] += r.transpose() * support_stiffness(f, c, t) * r;
+    // Which rigid motions a support resists depends on its geometry and on which of its springs
+    // are non-zero, not on how stiff they are. Summing the supports' own stiffnesses let a rigid
+    // penalty roller (kn ~ 1e17 Pa/m) swamp a soft layer's shear (ks ~ 1e8 Pa/m) below the
+    // eigenvalue tolerance, and a held structure was refused. So each spring enters with unit
+    // stiffness: the tolerance then measures geometric degeneracy only.
+    for (const bool normal : {true, false}) {
+      if ((normal ? f.normal_stiffness : f.shear_stiffness) <= 0.0)
+        continue;
+      Interface unit = f;
+      unit.normal_stiffness = normal ? 1.0 : 0.0;
+      unit.shear_stiffness = normal ? 0.0 : 1.0;
+      held[g] += r.transpose() * support_stiffness(unit, c, t) * r;
+    }
     scale[g] = std::max(scale[g], f.normal_stiffness * f.segment.length() * t);
   }
   std::vector<std::vector<int>> members(n);

@@ -32,6 +32,9 @@ int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
   const bimrock::Model model = bimrock::build_model(c.spec);
   if (out.empty())
     out = default_output(case_file);
+  // Both checked before solving: a run must not end, after the work, on a folder it cannot use.
+  bimrock::check_output_size(model, c);
+  bimrock::check_output_folder(out);
   if (model.stages.empty()) {
     const bimrock::ElasticSolution solution = bimrock::solve_elastic(model);
     bimrock::write_elastic_results(model, solution, c.output, out);

@@ -124,6 +124,8 @@ void validate(const JointSet& set, const std::string& item) {
     throw GeometryError(item + ".trace_length", "must be positive");
   if (!(set.gap >= 0.0) || !std::isfinite(set.gap))
     throw GeometryError(item + ".gap", "must be zero or positive");
+  if (set.trace_length && !std::isfinite(*set.trace_length + set.gap))
+    throw GeometryError(item + ".trace_length", "trace_length + gap must be a finite length");
   if (!(set.spacing_variation.amount >= 0.0) || !std::isfinite(set.spacing_variation.amount))
     throw GeometryError(item + ".spacing_variation", "the amount must be zero or positive");
   if (!(set.dip_variation.amount >= 0.0) || !std::isfinite(set.dip_variation.amount))
@@ -131,7 +133,48 @@ void validate(const JointSet& set, const std::string& item) {
 }
 
 double trace_margin(const BBox& box, const JointSet& set) {
-  return 0.02 * box.diagonal() + set.spacing;
+  return 0.02 * box.diagonal() + std::min(set.spacing, box.diagonal());
+}
+
+namespace {
+
+BBox grown_box(const BBox& box, const JointSet& set) {
+  const double m = trace_margin(box, set);
+  BBox grown;
+  grown.add(Vec2(box.lo - Vec2(m, m)));
+  grown.add(Vec2(box.hi + Vec2(m, m)));
+  return grown;
+}
+
+// The extent [n_min, n_max] of `grown` along the normal of the set, from its origin.
+std::pair<double, double> normal_extent(const BBox& grown, const JointSet& set, const Vec2& n) {
+  double n_min = std::numeric_limits<double>::infinity();
+  double n_max = -n_min;
+  for (const Vec2& c :
+       {grown.lo, grown.hi, Vec2(grown.lo.x(), grown.hi.y()), Vec2(grown.hi.x(), grown.lo.y())}) {
+    n_min = std::min(n_min, n.dot(c - set.origin));
+    n_max = std::max(n_max, n.dot(c - set.origin));
+  }
+  return {n_min, n_max};
+}
+
+}  // namespace
+
+TraceEstimate estimate_traces(const JointSet& set, const BBox& box) {
+  if (box.empty())
+    return {};
+  const BBox grown = grown_box(box, set);
+  const auto [n_min, n_max] = normal_extent(grown, set, perp(direction_deg(set.dip_deg)));
+  const double joints = std::floor((n_max - n_min) / set.spacing) + 1.0;
+  const double reach = grown.diagonal();  // the longest a joint's line is inside `grown`
+  const bool persistent = !set.trace_length || set.gap == 0.0;
+  if (persistent)
+    return {joints, joints * reach};
+  const double period = *set.trace_length + set.gap;
+  // Whole periods along the line, plus one cut at each end.
+  const double per_joint = std::floor(reach / period) + 2.0;
+  const double covered = std::min(reach, (reach / period + 1.0) * *set.trace_length);
+  return {joints * per_joint, joints * covered};
 }
 
 std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, const BBox& box) {
@@ -140,20 +183,10 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
   std::vector<JointTrace> traces;
   if (box.empty())
     return traces;
-  const double m = trace_margin(box, set);
-  BBox grown;
-  grown.add(Vec2(box.lo - Vec2(m, m)));
-  grown.add(Vec2(box.hi + Vec2(m, m)));
-
+  const BBox grown = grown_box(box, set);
   const Vec2 t0 = direction_deg(set.dip_deg);
   const Vec2 n = perp(t0);
-  double n_min = std::numeric_limits<double>::infinity();
-  double n_max = -n_min;
-  for (const Vec2& c :
-       {grown.lo, grown.hi, Vec2(grown.lo.x(), grown.hi.y()), Vec2(grown.hi.x(), grown.lo.y())}) {
-    n_min = std::min(n_min, n.dot(c - set.origin));
-    n_max = std::max(n_max, n.dot(c - set.origin));
-  }
+  const auto [n_min, n_max] = normal_extent(grown, set, n);
   const bool persistent = !set.trace_length || set.gap == 0.0;
   const double length = persistent ? 0.0 : *set.trace_length;
   const double period = length + set.gap;
@@ -178,8 +211,14 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
       continue;
     }
     const double phase = (set.staggered && k % 2 != 0) ? 0.5 * period : 0.0;
-    const auto j0 = static_cast<long>(std::ceil((a0 - phase - length) / period));
-    const auto j1 = static_cast<long>(std::floor((a1 - phase) / period));
+    // Divided term by term: with a trace length near the largest double, a0 - phase - length
+    // overflows to -inf and the trace index with it (a loop from LONG_MIN that never ends).
+    const double j0d = std::ceil((a0 - phase) / period - length / period);
+    const double j1d = std::floor((a1 - phase) / period);
+    if (!(j1d - j0d < kMaxJointsPerSet))
+      throw GeometryError(item, "the trace length and gap are too small for the region to cover");
+    const auto j0 = static_cast<long>(j0d);
+    const auto j1 = static_cast<long>(j1d);
     for (long j = j0; j <= j1; ++j) {
       const double start = phase + static_cast<double>(j) * period;
       const double b0 = std::max(a0, start);

@@ -78,8 +78,19 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
 std::vector<JointTrace> generate_traces(std::span<const JointSet> sets,
                                         std::span<const Joint> joints, const BBox& box);
 
-/// The growth of `box` used by generate_traces: 2% of its diagonal plus one spacing.
+/// The growth of `box` used by generate_traces: 2% of its diagonal plus one spacing, or plus the
+/// diagonal when the spacing is larger (a larger margin would only hold traces far outside the
+/// box, and their number grows with it).
 double trace_margin(const BBox& box, const JointSet& set);
+
+/// What generate_traces(set, _, box) would produce, estimated without generating: the number
+/// of traces (an upper bound with constant spacing) and their total length. Never overflows:
+/// huge counts are returned as huge doubles.
+struct TraceEstimate {
+  double traces = 0.0;
+  double length = 0.0;
+};
+TraceEstimate estimate_traces(const JointSet& set, const BBox& box);
 
 /// Unit vector at `deg` degrees counter-clockwise from +x, exact at multiples of 90 degrees.
 Vec2 direction_deg(double deg);

@@ -15,6 +15,8 @@
 #include <sstream>
 #include <utility>
 
+#include <fmt/core.h>
+
 #include <bimrock/io/gmsh_mesh.hpp>
 #include <bimrock/io/yaml_value.hpp>
 
@@ -44,6 +46,7 @@ constexpr std::array kKeys = {
     CaseKey{"", "monitors"},
     CaseKey{"", "output"},
     CaseKey{"", "stages"},
+    CaseKey{"", "limits"},
     CaseKey{"analysis", "plane"},
     CaseKey{"analysis", "thickness"},
     CaseKey{"analysis", "penalty_factor"},
@@ -143,6 +146,12 @@ constexpr std::array kKeys = {
     CaseKey{"stages[].control", "monitor", true},
     CaseKey{"stages[].control", "direction", true},
     CaseKey{"stages[].control", "displacement", true},
+    CaseKey{"limits", "blocks"},
+    CaseKey{"limits", "joint_traces"},
+    CaseKey{"limits", "interfaces"},
+    CaseKey{"limits", "yield_planes"},
+    CaseKey{"limits", "increments"},
+    CaseKey{"limits", "output_mb"},
 };
 
 std::vector<std::string_view> keys_of(std::string_view section) {
@@ -178,6 +187,44 @@ double positive(const Value& v) {
   return d;
 }
 
+/// The largest coordinate magnitude [m]. Exact geometry (CGAL) squares and multiplies
+/// coordinates; near 1e308 that overflows and CGAL crashes, so coordinates are bounded here.
+constexpr double kMaxCoordinate = 1e9;
+
+/// A point [x, y] that is a position in the model [m]: each coordinate within kMaxCoordinate.
+Vec2 location(const Value& v) {
+  const Vec2 p = v.point();
+  if (std::abs(p.x()) > kMaxCoordinate || std::abs(p.y()) > kMaxCoordinate) {
+    v.fail(fmt::format("coordinates must lie within +-{:g} m, not [{:g}, {:g}]", kMaxCoordinate,
+                       p.x(), p.y()));
+  }
+  return p;
+}
+
+/// A number whose magnitude is at most `max` (in `unit`): stiffnesses and loads far beyond any
+/// rock or structure overflow the stiffness matrix or the solution, so they are refused.
+double bounded(const Value& v, double max, const char* unit, const char* why) {
+  const double d = v.number();
+  if (std::abs(d) > max)
+    v.fail(fmt::format("must be at most {:g} {} in magnitude ({})", max, unit, why));
+  return d;
+}
+
+/// A point or vector [x, y] each of whose components is bounded(max).
+Vec2 bounded_vector(const Value& v, double max, const char* unit, const char* why) {
+  const Vec2 p = v.point();
+  if (std::abs(p.x()) > max || std::abs(p.y()) > max) {
+    v.fail(fmt::format("each component must be at most {:g} {} in magnitude ({})", max, unit, why));
+  }
+  return p;
+}
+
+constexpr double kMaxModulus = 1e15;    // [Pa]: 1000 times diamond's
+constexpr double kMaxStiffness = 1e20;  // [Pa/m]: kn of a 1e15 Pa layer 10 um thick
+constexpr double kMaxForce = 1e15;      // [N], and [Pa] for tractions
+constexpr const char* kStiffer = "no rock or joint is stiffer; larger values overflow";
+constexpr const char* kLarger = "larger loads overflow the displacements";
+
 /// One of a fixed set of names, e.g. plane: strain | stress.
 template <class E>
 E choice(const Value& v, std::initializer_list<std::pair<std::string_view, E>> options) {
@@ -201,14 +248,14 @@ std::string name(const Value& v) {
   return s;
 }
 
-/// [[x1, y1], [x2, y2]]: two points.
-std::pair<Vec2, Vec2> two_points(const Value& v, const char* what) {
+/// [[x1, y1], [x2, y2]]: two locations.
+std::pair<Vec2, Vec2> two_locations(const Value& v, const char* what) {
   const std::vector<Value> p = v.list();
   if (p.size() != 2) {
     v.fail(std::string("must be ") + what + " (two points), not a list of " +
            std::to_string(p.size()));
   }
-  return {p[0].point(), p[1].point()};
+  return {location(p[0]), location(p[1])};
 }
 
 template <class Read>
@@ -239,12 +286,12 @@ Selector read_selector(const Map& m, const char* kinds) {
 
   Selector s;
   if (line) {
-    const auto [a, b] = two_points(*line, "a segment [[x1, y1], [x2, y2]]");
+    const auto [a, b] = two_locations(*line, "a segment [[x1, y1], [x2, y2]]");
     s.kind = Selector::Kind::line;
     s.line = {a, b};
     s.source = line->ref();
   } else if (box) {
-    const auto [lo, hi] = two_points(*box, "a box [[xmin, ymin], [xmax, ymax]]");
+    const auto [lo, hi] = two_locations(*box, "a box [[xmin, ymin], [xmax, ymax]]");
     if (lo.x() > hi.x() || lo.y() > hi.y())
       box->fail("the first corner must be the lower-left one: [[xmin, ymin], [xmax, ymax]]");
     s.kind = Selector::Kind::box;
@@ -407,9 +454,10 @@ BlockMaterial read_block_material(const Entry& e) {
   const Map m = open(e.value, "materials.<name>");
   BlockMaterial b;
   b.name = e.key;
-  b.young = m.at("E").number();
+  b.young = bounded(m.at("E"), kMaxModulus, "Pa", kStiffer);
   b.poisson = m.at("nu").number();
-  b.unit_weight = m.number_or("unit_weight", 0.0);
+  if (const auto w = m.find("unit_weight"))
+    b.unit_weight = bounded(*w, 1e9, "N/m^3", "no material is that heavy");
   b.source = e.value.ref();
   if (const auto strength = m.find("strength"))
     b.strength = read_block_strength(*strength);
@@ -439,16 +487,19 @@ JointMaterial read_joint_material(const Entry& e, const AnalysisSettings& settin
   }
 
   if (springs) {
-    j.normal_stiffness = m.at("kn").number();
-    j.shear_stiffness = m.at("ks").number();
+    j.normal_stiffness = bounded(m.at("kn"), kMaxStiffness, "Pa/m", kStiffer);
+    j.shear_stiffness = bounded(m.at("ks"), kMaxStiffness, "Pa/m", kStiffer);
   } else if (layer) {
     // Checked here, not in build_model: the springs derived from a bad layer would hide the cause.
     const double young = positive(m.at("E"));
+    static_cast<void>(bounded(m.at("E"), kMaxModulus, "Pa", kStiffer));
     const Value nu = m.at("nu");
     const double poisson = nu.number();
     if (poisson <= -1.0 || poisson >= 0.5)
       nu.fail("must lie in (-1, 0.5)");
     const double h = positive(m.at("h"));
+    if (h < 1e-6)
+      m.at("h").fail("must be at least 1e-6 m (a thinner layer's springs overflow)");
     const SpringPair k = layer_stiffness(young, poisson, h, settings.plane);
     j.normal_stiffness = k.normal;
     j.shear_stiffness = k.shear;
@@ -482,7 +533,7 @@ BlockSpec read_block(const Value& v) {
   BlockSpec b;
   b.material = name(m.at("material"));
   for (const Value& p : m.at("vertices").list())
-    b.polygon.vertices.push_back(p.point());
+    b.polygon.vertices.push_back(location(p));
   b.source = v.ref();
   return b;
 }
@@ -494,7 +545,7 @@ BlockSpec read_block(const Value& v) {
 Polygon read_polygon(const Value& v) {
   Polygon p;
   for (const Value& point : v.list())
-    p.vertices.push_back(point.point());
+    p.vertices.push_back(location(point));
   return p;
 }
 
@@ -524,7 +575,7 @@ JointSet read_joint_set(const Value& v) {
   j.dip_deg = m.at("dip").number();
   j.spacing = positive(m.at("spacing"));
   if (const auto o = m.find("origin"))
-    j.origin = o->point();
+    j.origin = location(*o);
   if (const auto l = m.find("trace_length"))
     j.trace_length = positive(*l);
   j.gap = m.number_or("gap", 0.0);
@@ -542,7 +593,7 @@ JointSet read_joint_set(const Value& v) {
 
 Joint read_single_joint(const Value& v) {
   const Map m = open(v, "domain.joints[]");
-  return {name(m.at("material")), Segment{m.at("from").point(), m.at("to").point()}};
+  return {name(m.at("material")), Segment{location(m.at("from")), location(m.at("to"))}};
 }
 
 /// domain: the outline, holes and zones to cut, the joint sets and joints that cut it.
@@ -591,6 +642,7 @@ DomainSpec read_domain(const Value& v) {
     d.min_block_area = area;
   }
   if (const auto sub = m.find("subdivision")) {
+    remember(*sub);
     const Map sm = open(*sub, "domain.subdivision");
     VoronoiOptions o;
     o.target_size = positive(sm.at("size"));
@@ -781,7 +833,7 @@ SupportSpec read_support(const Value& v) {
 /// at [m], force [N] (over the thickness t).
 PointLoadSpec read_point_load(const Value& v) {
   const Map m = open(v, "loads.points[]");
-  return {m.at("at").point(), m.at("force").point(), v.ref()};
+  return {location(m.at("at")), bounded_vector(m.at("force"), kMaxForce, "N", kLarger), v.ref()};
 }
 
 /// normal, shear [Pa]: tension positive along the outward normal, shear along s = (-n_y, n_x).
@@ -789,8 +841,9 @@ TractionSpec read_traction(const Value& v) {
   const Map m = open(v, "loads.tractions[]");
   TractionSpec t;
   t.where = read_selector(m, "line, box or group");
-  t.normal = m.at("normal").number();
-  t.shear = m.number_or("shear", 0.0);
+  t.normal = bounded(m.at("normal"), kMaxForce, "Pa", kLarger);
+  if (const auto shear = m.find("shear"))
+    t.shear = bounded(*shear, kMaxForce, "Pa", kLarger);
   t.source = v.ref();
   return t;
 }
@@ -799,7 +852,7 @@ LoadsSpec read_loads(const Value& v) {
   const Map m = open(v, "loads");
   LoadsSpec loads;
   if (const auto g = m.find("gravity"))
-    loads.gravity = g->point();
+    loads.gravity = bounded_vector(*g, 1e6, "g", kLarger);
   if (const auto p = m.find("points"))
     loads.points = read_list(*p, read_point_load);
   if (const auto t = m.find("tractions"))
@@ -807,12 +860,32 @@ LoadsSpec read_loads(const Value& v) {
   return loads;
 }
 
+/// A name that becomes part of a file name (a monitor's plot_<name>.png): no folder separator,
+/// no control character, not "." or "..", and short enough for a file name with its prefix and
+/// suffix (most file systems allow 255 bytes).
+std::string file_name_part(const Value& v) {
+  std::string s = name(v);
+  constexpr std::size_t kMaxBytes = 200;
+  if (s.size() > kMaxBytes) {
+    v.fail(fmt::format("is {} bytes long: a name is part of a file name, at most {} bytes",
+                       s.size(), kMaxBytes));
+  }
+  for (const char c : s) {
+    if (c == '/' || c == '\\' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
+      v.fail("must not contain '/', '\\' or control characters: a name is part of a file name");
+    }
+  }
+  if (s == "." || s == "..")
+    v.fail("must not be '.' or '..': a name is part of a file name");
+  return s;
+}
+
 std::vector<MonitorSpec> read_monitors(const Value& v) {
   std::vector<MonitorSpec> monitors;
   for (const Value& element : v.list()) {
     const Map m = open(element, "monitors[]");
     const Value n = m.at("name");
-    MonitorSpec monitor{name(n), m.at("at").point(), element.ref()};
+    MonitorSpec monitor{file_name_part(n), location(m.at("at")), element.ref()};
     // Monitors are looked up by name (results columns, displacement control): names are unique.
     for (const MonitorSpec& other : monitors) {
       if (other.name == monitor.name) {
@@ -844,15 +917,34 @@ StageSpec read_stage(const Value& v) {
     DisplacementControlSpec d;
     d.monitor = name(c.at("monitor"));
     d.direction = c.at("direction").point();
+    if (!std::isfinite(d.direction.norm()))
+      c.at("direction").fail("is too long: give a unit vector");
     if (d.direction.norm() == 0.0)
       c.at("direction").fail("must not be the zero vector");
-    d.displacement = c.at("displacement").number();
+    d.displacement = bounded(c.at("displacement"), kMaxCoordinate, "m", "the model's extent");
     if (d.displacement == 0.0)
       c.at("displacement").fail("must not be zero");
     d.source = control->ref();
     st.control = d;
   }
   return st;
+}
+
+/// limits: each a positive number (a count, or MB for output_mb).
+CaseLimits read_limits(const Value& v) {
+  const Map m = open(v, "limits");
+  CaseLimits l;
+  const std::pair<const char*, double*> fields[] = {
+      {"blocks", &l.blocks},         {"joint_traces", &l.joint_traces},
+      {"interfaces", &l.interfaces}, {"yield_planes", &l.yield_planes},
+      {"increments", &l.increments}, {"output_mb", &l.output_mb}};
+  for (const auto& [key, field] : fields) {
+    if (const auto x = m.find(key)) {
+      *field = positive(*x);
+      l.lines[std::string("limits.") + key] = x->line();
+    }
+  }
+  return l;
 }
 
 OutputOptions read_output(const Value& v) {
@@ -916,6 +1008,8 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
     s.monitors = read_monitors(*v);
   if (const auto v = m.find("output"))
     c.output = read_output(*v);
+  if (const auto v = m.find("limits"))
+    s.limits = read_limits(*v);
   if (const auto v = m.find("stages")) {
     if (const auto loads = m.find("loads"))
       loads->fail("give loads either here (an elastic analysis) or in stages, not both");
@@ -932,22 +1026,79 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
   return c;
 }
 
+/// The 1-based line of the first line that is neither blank nor a comment (0: none).
+int first_content_line(const std::string& text) {
+  std::istringstream in(text);
+  std::string l;
+  for (int line = 1; std::getline(in, l); ++line) {
+    const std::size_t first = l.find_first_not_of(" \t\r");
+    if (first != std::string::npos && l[first] != '#')
+      return line;
+  }
+  return 0;
+}
+
+/// The 1-based line where a second YAML document starts (0: there is one document at most): its
+/// first content after a `---` marker that follows content or an end marker `...` (the marker's
+/// line if nothing follows), or content after `...`. Document
+/// markers are only markers at the start of a line, outside any scalar, so a line scan finds
+/// them exactly.
+int second_document_line(const std::string& text) {
+  const auto marker = [](const std::string& l, const char* m) {
+    return l.rfind(m, 0) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r');
+  };
+  const auto has_content = [](const std::string& l, std::size_t from) {
+    const std::size_t first = l.find_first_not_of(" \t\r", from);
+    return first != std::string::npos && l[first] != '#';
+  };
+  std::istringstream in(text);
+  std::string l;
+  bool content = false;  // the first document has begun
+  bool ended = false;    // ... and an end marker `...` closed it
+  int second = 0;        // the line of a second `---`: the second document's content follows
+  for (int line = 1; std::getline(in, l); ++line) {
+    if (marker(l, "---")) {
+      if (content || ended) {
+        if (has_content(l, 3))
+          return line;
+        second = second > 0 ? second : line;
+      }
+      content = true;
+    } else if (marker(l, "...")) {
+      ended = content;
+    } else if (has_content(l, 0)) {
+      if (ended || second > 0)
+        return line;    // the line of the second document's first content, as yaml-cpp marks it
+      if (l[0] != '%')  // a directive (%YAML 1.2) before the document is not content
+        content = true;
+    }
+  }
+  return second;
+}
+
 /// Parses the text; a syntax error becomes an InputError at the line yaml-cpp reports.
+/// Not YAML::LoadAll: in yaml-cpp 0.7 it loops without end, allocating, on some malformed input
+/// (a file holding only `,`). Load reads the first document only; a second one is found by
+/// second_document_line() and refused.
 YAML::Node parse(const std::string& text, const std::string& file) {
-  std::vector<YAML::Node> documents;
+  if (const int line = second_document_line(text)) {
+    throw InputError(file, line, "", "more than one YAML document ('---'): give one case per file");
+  }
+  YAML::Node document;
   try {
-    documents = YAML::LoadAll(text);
+    document = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     throw InputError(file, e.mark.is_null() ? 0 : e.mark.line + 1, "", "malformed YAML: " + e.msg);
   }
-  if (documents.empty() || documents.front().IsNull())
+  if (!document.IsDefined() || document.IsNull()) {
+    if (const int line = first_content_line(text)) {
+      throw InputError(file, line, "",
+                       "malformed YAML: no value could be read from this line (a case file is a "
+                       "map of sections, starting with 'schema: 1')");
+    }
     throw InputError(file, 0, "", "the case file is empty: it must start with 'schema: 1'");
-  if (documents.size() > 1) {
-    const YAML::Mark mark = documents[1].Mark();
-    throw InputError(file, mark.is_null() ? 0 : mark.line + 1, "",
-                     "more than one YAML document ('---'): give one case per file");
   }
-  return documents.front();
+  return document;
 }
 
 }  // namespace

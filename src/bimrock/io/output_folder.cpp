@@ -7,6 +7,8 @@
 
 #include <fmt/core.h>
 
+#include <bimrock/model/errors.hpp>
+
 namespace bimrock {
 
 namespace fs = std::filesystem;
@@ -17,6 +19,39 @@ bool is_replaceable_results_folder(const fs::path& folder) {
   if (!fs::is_directory(folder))
     return false;
   return fs::is_empty(folder) || fs::exists(folder / "summary.json");
+}
+
+void check_output_folder(const fs::path& folder) {
+  fs::path target = folder;
+  if (target.filename().empty())
+    target = target.parent_path();  // "out/" -> "out"
+  const auto fail = [&](const std::string& why) {
+    throw InputError(target.string(), 0, "", "cannot write the results here: " + why);
+  };
+  std::error_code ec;
+  const fs::file_status status = fs::status(target, ec);
+  if (fs::exists(status)) {
+    if (!fs::is_directory(status))
+      fail("it exists and is not a folder; choose another output folder (-o)");
+    if (!is_replaceable_results_folder(target)) {
+      fail(
+          "it exists and does not hold bimrock results (no summary.json); choose another "
+          "output folder (-o) or remove it");
+    }
+  }
+  // The results are staged beside the target, in its parent, created if need be: the nearest
+  // existing ancestor must be a folder we may create folders in.
+  fs::path above = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  while (!fs::exists(above, ec) && above.has_parent_path() && above != above.parent_path())
+    above = above.parent_path();
+  if (!fs::exists(above, ec))
+    above = ".";
+  if (!fs::is_directory(above, ec))
+    fail(above.string() + " is not a folder");
+  const fs::path probe = above / fmt::format(".bimrock-probe-{}", ::getpid());
+  if (!fs::create_directory(probe, ec) || ec)
+    fail("cannot create a folder in " + above.string() + ": " + ec.message());
+  fs::remove(probe, ec);
 }
 
 StagingFolder::StagingFolder(fs::path target) : target_(std::move(target)) {

@@ -29,6 +29,11 @@ class StagingFolder {
   bool committed_ = false;
 };
 
+/// Checks, before any work, that the results can be written to `folder`: it is absent, an empty
+/// folder or earlier results; the nearest existing folder above it is a folder one may create
+/// folders in (tried with a probe folder, removed at once). Throws InputError naming `folder`.
+void check_output_folder(const std::filesystem::path& folder);
+
 /// Whether `folder` holds results of an earlier run (a summary.json), or is empty: only such a
 /// folder may be replaced by new results.
 [[nodiscard]] bool is_replaceable_results_folder(const std::filesystem::path& folder);

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <bimrock/model/limits.hpp>
+
 #include <bimrock/io/block_picture.hpp>
 #include <bimrock/io/history_writer.hpp>
 #include <bimrock/io/run_summary.hpp>
@@ -47,6 +49,38 @@ std::vector<InterfaceMark> mechanism_marks(const Model& model, const PlasticResu
 }
 
 }  // namespace
+
+double estimate_output_bytes(const Model& model, const OutputOptions& options) {
+  double vertices = 0.0;
+  for (const Block& b : model.blocks)
+    vertices += static_cast<double>(b.polygon.vertices.size());
+  const double interfaces = model.n_interfaces();
+  const double points = vertices + 2.0 * interfaces;
+  const double cells = model.n_blocks() + interfaces;
+  // A .vtu step (vtk_writer.cpp), Base64 (4/3): per point its coordinates, displacement and
+  // connectivity (7 x 8 bytes); per cell its offset, type and 20 numbers of cell data.
+  const double step = 4.0 / 3.0 * (56.0 * points + 169.0 * cells) + 4096.0;
+  double increments = 0.0;
+  for (const Stage& s : model.stages)
+    increments += s.increments;
+  const double steps = model.stages.empty() ? 1.0 : increments + 1.0;
+  // The tables of the final state and the history: a few hundred bytes per row.
+  const double tables = options.csv ? 200.0 * cells : 0.0;
+  const double history = 200.0 * (1.0 + static_cast<double>(model.monitors.size())) * steps;
+  return (options.vtk ? steps * step : 0.0) + tables + history + 1e6;  // + pictures, summary
+}
+
+void check_output_size(const Model& model, const Case& c) {
+  const double mb = estimate_output_bytes(model, c.output) / 1e6;
+  const CaseLimits& limits = c.spec.limits;
+  if (mb <= limits.output_mb)
+    return;
+  const auto line = limits.lines.find("limits.output_mb");
+  throw InputError(c.spec.file, line == limits.lines.end() ? 0 : line->second, "output",
+                   limit_message(mb, limits.output_mb, "output_mb", "MB of results",
+                                 c.output.vtk ? "give fewer increments or set output.vtk: false"
+                                              : "give fewer increments"));
+}
 
 void write_elastic_results(const Model& model, const ElasticSolution& solution,
                            const OutputOptions& options, const fs::path& out) {

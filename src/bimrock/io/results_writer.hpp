@@ -19,6 +19,13 @@ namespace bimrock {
 /// slow to draw; ParaView is the tool then).
 inline constexpr int kMaxPictureBlocks = 20000;
 
+/// The size of the results of `model` [bytes], estimated before solving: one VTK file per
+/// increment (the bulk), the rest small. Bisection of a step that fails adds a few steps.
+[[nodiscard]] double estimate_output_bytes(const Model& model, const OutputOptions& options);
+
+/// Throws InputError when estimate_output_bytes() exceeds the case's limits.output_mb.
+void check_output_size(const Model& model, const Case& c);
+
 /// Writes the results of an elastic run into `out` (replacing earlier results there).
 void write_elastic_results(const Model& model, const ElasticSolution& solution,
                            const OutputOptions& options, const std::filesystem::path& out);

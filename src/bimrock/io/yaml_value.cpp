@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include <fmt/core.h>
+
 namespace bimrock::yaml {
 namespace {
 
@@ -27,6 +29,41 @@ std::string describe(const YAML::Node& node) {
 int line_of(const YAML::Node& node, int fallback) {
   const YAML::Mark mark = node.Mark();
   return mark.is_null() ? fallback : mark.line + 1;
+}
+
+/// The offset of the first byte of `s` that is not part of well-formed UTF-8, or npos.
+std::size_t invalid_utf8(const std::string& s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;
+    unsigned lo = 0x80;
+    unsigned hi = 0xBF;
+    if (c < 0x80)
+      n = 0;
+    else if (c >= 0xC2 && c <= 0xDF)
+      n = 1;
+    else if (c >= 0xE0 && c <= 0xEF) {
+      n = 2;
+      lo = c == 0xE0 ? 0xA0 : 0x80;  // no overlong forms
+      hi = c == 0xED ? 0x9F : 0xBF;  // no surrogates
+    } else if (c >= 0xF0 && c <= 0xF4) {
+      n = 3;
+      lo = c == 0xF0 ? 0x90 : 0x80;
+      hi = c == 0xF4 ? 0x8F : 0xBF;
+    } else {
+      return i;
+    }
+    if (n > 0 && i + n >= s.size())
+      return i;  // truncated sequence
+    for (std::size_t k = 1; k <= n; ++k) {
+      const auto b = static_cast<unsigned char>(s[i + k]);
+      if (b < (k == 1 ? lo : 0x80) || b > (k == 1 ? hi : 0xBF))
+        return i;
+    }
+    i += n + 1;
+  }
+  return std::string::npos;
 }
 
 std::string joined(const std::vector<std::string_view>& words) {
@@ -89,7 +126,16 @@ bool Value::boolean() const {
 }
 
 std::string Value::text() const {
-  return scalar("a string");
+  const std::string& s = scalar("a string");
+  // Names and titles reach file names, JSON and pictures, which all take UTF-8: a byte of
+  // another encoding (Latin-1 0xFC for u-umlaut) is rejected here rather than written escaped.
+  if (const std::size_t at = invalid_utf8(s); at != std::string::npos) {
+    fail(
+        fmt::format("is not valid UTF-8 (byte 0x{:02X} at position {}): save the case file as "
+                    "UTF-8",
+                    static_cast<unsigned char>(s[at]), at + 1));
+  }
+  return s;
 }
 
 Vec2 Value::point() const {

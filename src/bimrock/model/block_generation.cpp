@@ -5,6 +5,7 @@
 
 #include <bimrock/geometry/geometry_error.hpp>
 #include <bimrock/model/errors.hpp>
+#include <bimrock/model/limits.hpp>
 
 namespace bimrock {
 
@@ -48,12 +49,76 @@ Polygon without_short_edges(const Polygon& p, double tol) {
   return out.vertices.size() >= 3 ? out : p;
 }
 
+// The number of blocks cutting `spec` yields, estimated from its traces before they are
+// generated: by Euler's formula, about one block per trace and per crossing, and two sets of
+// total trace lengths La, Lb at angle theta spread over an area A cross about
+// La Lb |sin theta| / A times. Throws InputError when the traces or blocks exceed `limits`.
+void check_generation_limits(const DomainSpec& spec, const std::string& file,
+                             const CaseLimits& limits) {
+  const BBox box = bbox_of(spec.domain);
+  if (box.empty())
+    return;
+  double traces = static_cast<double>(spec.joints.size());
+  std::vector<TraceEstimate> estimates;
+  std::vector<double> areas;
+  for (std::size_t s = 0; s < spec.joint_sets.size(); ++s) {
+    const JointSet& set = spec.joint_sets[s];
+    validate(set, "joint_sets[" + std::to_string(s) + "]");
+    estimates.push_back(estimate_traces(set, box));
+    const double w = box.diagonal() + 2.0 * trace_margin(box, set);
+    areas.push_back(w * w);
+    traces += estimates.back().traces;
+    if (traces > limits.joint_traces) {
+      const std::string item = "domain.joint_sets[" + std::to_string(s) + "]";
+      throw InputError(file, line_of(spec, item), item,
+                       limit_message(traces, limits.joint_traces, "joint_traces", "joint traces",
+                                     "check spacing, trace_length and gap"));
+    }
+  }
+  double blocks = 1.0 + traces;
+  for (std::size_t a = 0; a < estimates.size(); ++a) {
+    for (std::size_t b = a + 1; b < estimates.size(); ++b) {
+      const double angle = (spec.joint_sets[a].dip_deg - spec.joint_sets[b].dip_deg) * M_PI / 180;
+      blocks += estimates[a].length * estimates[b].length * std::abs(std::sin(angle)) /
+                std::max(areas[a], areas[b]);
+    }
+  }
+  // Named: the set with the most traces (the one whose spacing or traces are likely mistyped).
+  std::string item = "domain";
+  double most = 0.0;
+  for (std::size_t s = 0; s < estimates.size(); ++s) {
+    if (estimates[s].traces > most) {
+      most = estimates[s].traces;
+      item = "domain.joint_sets[" + std::to_string(s) + "]";
+    }
+  }
+  std::string advice = "check the spacings, trace lengths and gaps";
+  if (spec.subdivision) {
+    const double size = spec.subdivision->target_size;
+    const double area = (box.hi.x() - box.lo.x()) * (box.hi.y() - box.lo.y());
+    const double cells = area / (size * size);
+    if (area > 2.0 * size * size) {
+      if (cells > blocks) {  // the subdivision is named when its cells outnumber the cuts
+        item = "domain.subdivision";
+        advice = "check subdivision.size (about one cell per size^2 of the domain)";
+      }
+      blocks += cells;
+    }
+  }
+  if (blocks > limits.blocks) {
+    throw InputError(file, line_of(spec, item), item,
+                     limit_message(blocks, limits.blocks, "blocks", "blocks", advice));
+  }
+}
+
 }  // namespace
 
-GeneratedBlocks generate_blocks(const DomainSpec& spec, const std::string& file) {
+GeneratedBlocks generate_blocks(const DomainSpec& spec, const std::string& file,
+                                const CaseLimits& limits) {
   GeneratedBlocks out;
   try {
     validate(spec.domain);
+    check_generation_limits(spec, file, limits);
     const std::vector<JointTrace> traces =
         generate_traces(spec.joint_sets, spec.joints, bbox_of(spec.domain));
     CutOptions options;

@@ -27,7 +27,9 @@ struct GeneratedBlocks {
 };
 
 /// Throws InputError naming the file, the line and the item of the domain (e.g.
-/// "domain.holes[1]") for bad geometry.
-GeneratedBlocks generate_blocks(const DomainSpec& spec, const std::string& file);
+/// "domain.holes[1]") for bad geometry, and for a domain whose joint traces or blocks, estimated
+/// before any is generated, would exceed `limits`.
+GeneratedBlocks generate_blocks(const DomainSpec& spec, const std::string& file,
+                                const CaseLimits& limits = {});
 
 }  // namespace bimrock

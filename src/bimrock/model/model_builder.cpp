@@ -3,6 +3,7 @@
 #include <map>
 
 #include <bimrock/model/block_generation.hpp>
+#include <bimrock/model/limits.hpp>
 #include <bimrock/model/model.hpp>
 
 namespace bimrock {
@@ -31,7 +32,7 @@ class Builder {
     if (spec_.domain) {
       if (!spec_.blocks.empty())
         fail(spec_.domain->source, "give either blocks or a domain, not both");
-      generated_ = generate_blocks(*spec_.domain, spec_.file);
+      generated_ = generate_blocks(*spec_.domain, spec_.file, spec_.limits);
     }
     if (spec_.mesh)
       check_mesh();
@@ -132,6 +133,31 @@ class Builder {
                                                         : spec_.blocks;
     if (blocks.empty())
       fail({0, "blocks"}, "the case has no blocks");
+    const CaseLimits& limits = spec_.limits;
+    if (static_cast<double>(blocks.size()) > limits.blocks) {
+      fail(spec_.mesh ? spec_.mesh->source : SourceRef{0, "blocks"},
+           limit_message(static_cast<double>(blocks.size()), limits.blocks, "blocks", "blocks",
+                         "give fewer blocks"));
+    }
+    // Each block with a strength has `planes` yield conditions (a planes x 3 matrix per block).
+    double planes = 0.0;
+    const BlockMaterial* widest = nullptr;
+    for (const BlockSpec& b : blocks) {
+      const auto it = block_material_index_.find(b.material);
+      if (it == block_material_index_.end())
+        continue;  // reported below
+      const BlockMaterial& m = model_.block_materials[static_cast<std::size_t>(it->second)];
+      if (m.strength) {
+        planes += m.strength->planes;
+        if (!widest || m.strength->planes > widest->strength->planes)
+          widest = &m;
+      }
+    }
+    if (planes > limits.yield_planes) {
+      fail({widest->source.line, widest->source.item + ".strength.planes"},
+           limit_message(planes, limits.yield_planes, "yield_planes",
+                         "block yield planes (planes x blocks)", "give fewer planes"));
+    }
     BBox box;
     for (const BlockSpec& b : blocks) {
       for (const Vec2& v : b.polygon.vertices) {
@@ -189,6 +215,15 @@ class Builder {
     return {k, k};
   }
 
+  // Throws when `more` interface segments would take the model past limits.interfaces.
+  void check_interfaces(double more, const SourceRef& source, const std::string& what) const {
+    const double total = static_cast<double>(model_.interfaces.size()) + more;
+    if (total > spec_.limits.interfaces) {
+      fail(source, limit_message(total, spec_.limits.interfaces, "interfaces",
+                                 "interface segments (" + what + ")", "give fewer subdivisions"));
+    }
+  }
+
   void push_interface(Interface f, int subdivisions) {
     const Segment s = f.segment;
     for (int k = 0; k < subdivisions; ++k) {
@@ -225,6 +260,21 @@ class Builder {
       }
       if (!any)
         fail(rule.source, "selects no interface between blocks");
+    }
+    double segments = 0.0;
+    int most = -1;  // the joint material with the most subdivisions
+    for (std::size_t k = 0; k < shared_.size(); ++k) {
+      if (material[k] < 0)
+        continue;
+      const int n = model_.joint_materials[static_cast<std::size_t>(material[k])].subdivisions;
+      segments += n;
+      if (most < 0 || n > model_.joint_materials[static_cast<std::size_t>(most)].subdivisions)
+        most = material[k];
+    }
+    if (most >= 0) {
+      const JointMaterial& jm = model_.joint_materials[static_cast<std::size_t>(most)];
+      check_interfaces(segments, {jm.source.line, jm.source.item + ".subdivisions"},
+                       "interfaces between blocks x subdivisions");
     }
     for (std::size_t k = 0; k < shared_.size(); ++k) {
       const SharedEdge& s = shared_[k];
@@ -265,6 +315,7 @@ class Builder {
         const Integration rule =
             m >= 0 ? model_.joint_materials[m].integration : Integration::lobatto;
         const int subdivisions = m >= 0 ? model_.joint_materials[m].subdivisions : 1;
+        check_interfaces(subdivisions, s.source, "supported edges x subdivisions");
         push_interface({edge.polygon, kGround, edge.segment, edge.outward_normal, k_ns.normal,
                         k_ns.shear, rule, m, static_cast<int>(sup)},
                        subdivisions);
@@ -313,7 +364,14 @@ class Builder {
   void add_loads() { model_.loads = resolve_loads(spec_.loads, "loads"); }
 
   void add_stages() {
+    double increments = 0.0;
     for (const StageSpec& st : spec_.stages) {
+      increments += st.increments;
+      if (increments > spec_.limits.increments) {
+        fail({st.source.line, st.source.item + ".increments"},
+             limit_message(increments, spec_.limits.increments, "increments",
+                           "load increments (over all stages)", "give fewer increments"));
+      }
       Stage stage{st.name, resolve_loads(st.loads, st.source.item), st.increments, std::nullopt,
                   st.source};
       if (st.increments < 1)
