@@ -9,38 +9,18 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
-#include <bimrock/geometry/brick_pattern.hpp>
 
-#include "support/cases.hpp"
+#include "support/pull_out_case.hpp"
 
 namespace bimrock {
 namespace {
 
 CaseSpec pull_out_case(double friction_deg, double dilation_deg) {
-  CaseSpec c;
-  c.file = "pull_out";
-  c.block_materials = {testing::rock(89e9, 0.26, 16e3)};
   JointStrength s;
   s.cohesion = Softening::constant(20e3);
   s.friction = Softening::constant(std::tan(friction_deg * M_PI / 180.0));
   s.dilation = std::tan(dilation_deg * M_PI / 180.0);
-  JointMaterial vertical = testing::springs("vertical", 395.9e9, 438.8e9);
-  JointMaterial horizontal = testing::springs("horizontal", 531.9e9, 438.8e9);
-  vertical.strength = horizontal.strength = s;
-  JointMaterial base = testing::springs("base", 531.9e9, 438.8e9);  // elastic
-  c.joint_materials = {vertical, horizontal, base};
-  c.blocks = testing::blocks_of(brick_pattern(3, 4, 2.0, 0.5, Stagger::rows));
-  c.default_joint = "vertical";
-  c.joint_rules.push_back({testing::with_orientation(0.0), "horizontal", {0, "rule"}});
-  SupportSpec support = testing::fixed({0, 0}, {6, 0});
-  support.joint_material = "base";
-  c.supports.push_back(support);
-  StageSpec gravity{"gravity", {}, 1, std::nullopt, {0, "gravity"}};
-  gravity.loads.gravity = Vec2(0, -1);
-  StageSpec pull{"pull", {}, 30, std::nullopt, {0, "pull"}};
-  pull.loads.points.push_back({Vec2(6.0, 0.75), Vec2(120e3, 0.0), {0, "P"}});
-  c.stages = {gravity, pull};
-  return c;
+  return testing::pull_out_case(s, 120e3, 30);
 }
 
 TEST(NonAssociatedCollapse, PullOutEndsWithAProvenCollapseForEveryDilation) {

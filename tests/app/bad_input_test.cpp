@@ -3,23 +3,15 @@
 #include <gtest/gtest.h>
 
 #include "support/run_bimrock.hpp"
+#include "support/two_blocks_case.hpp"
 
 namespace bimrock {
 namespace {
 
 // A valid case: two blocks on a fixed base. Block 0 is on line 10, block 1 on line 11.
-const std::string kHeader = R"(schema: 1
-materials:
-  rock: {E: 10.0e9, nu: 0.2}
-joint_materials:
-  joint: {kn: 1.0e10, ks: 1.0e10}
-joints: {default: joint}
-supports:
-  - {line: [[0, 0], [2, 0]], type: fixed}
-blocks:
-)";
-const std::string kBlock0 = "  - {material: rock, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}\n";
-const std::string kBlock1 = "  - {material: rock, vertices: [[1, 0], [2, 0], [2, 1], [1, 1]]}\n";
+const std::string& kHeader = testing::kTwoBlocksHeader;
+const std::string& kBlock0 = testing::kTwoBlocksBlock0;
+const std::string& kBlock1 = testing::kTwoBlocksBlock1;
 
 struct BadInput {
   const char* name;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "support/run_bimrock.hpp"
+#include "support/two_blocks_case.hpp"
 
 namespace bimrock {
 namespace {
@@ -190,18 +191,8 @@ TEST(Repro, HugeSpacingWithTracesGivesTheBlocksOfOneJoint) {
 
 // ---- The output folder of `run`, checked before solving ----------------------------------------
 
-const std::string kElastic = R"(schema: 1
-materials:
-  rock: {E: 10.0e9, nu: 0.2}
-joint_materials:
-  joint: {kn: 1.0e10, ks: 1.0e10}
-joints: {default: joint}
-supports:
-  - {line: [[0, 0], [2, 0]], type: fixed}
-blocks:
-  - {material: rock, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
-  - {material: rock, vertices: [[1, 0], [2, 0], [2, 1], [1, 1]]}
-)";
+const std::string kElastic =
+    testing::kTwoBlocksHeader + testing::kTwoBlocksBlock0 + testing::kTwoBlocksBlock1;
 
 struct Folder {
   const char* name;

@@ -14,36 +14,17 @@
 #include <bimrock/analysis/plastic_analysis.hpp>
 
 #include "support/cases.hpp"
+#include "support/pull_out_case.hpp"
 
 namespace bimrock {
 namespace {
 
 CaseSpec pull_out_case(double increment_kn) {
-  CaseSpec c;
-  c.file = "pull_out";
-  c.block_materials = {testing::rock(89e9, 0.26, 16e3)};
   JointStrength cohesive;
   cohesive.cohesion = Softening::constant(20e3);
-  JointMaterial vertical = testing::springs("vertical", 395.9e9, 438.8e9);
-  JointMaterial horizontal = testing::springs("horizontal", 531.9e9, 438.8e9);
-  vertical.strength = horizontal.strength = cohesive;
-  JointMaterial base = testing::springs("base", 531.9e9, 438.8e9);  // elastic
-  c.joint_materials = {vertical, horizontal, base};
-  c.blocks = testing::blocks_of(brick_pattern(3, 4, 2.0, 0.5, Stagger::rows));
-  c.default_joint = "vertical";
-  c.joint_rules.push_back({testing::with_orientation(0.0), "horizontal", {0, "rule"}});
-  SupportSpec support = testing::fixed({0, 0}, {6, 0});
-  support.joint_material = "base";
-  c.supports.push_back(support);
-  StageSpec gravity{"gravity", {}, 1, std::nullopt, {0, "gravity"}};
-  gravity.loads.gravity = Vec2(0, -1);
   const double total = 60e3;
-  StageSpec pull{
-      "pull", {}, static_cast<int>(total / (increment_kn * 1e3) + 0.5), std::nullopt, {0, "pull"}};
-  pull.loads.points.push_back({Vec2(6.0, 0.75), Vec2(total, 0.0), {0, "P"}});
-  c.stages = {gravity, pull};
-  c.monitors.push_back({"A", Vec2(6.0, 0.75), {0, "A"}});
-  return c;
+  return testing::pull_out_case(cohesive, total,
+                                static_cast<int>(total / (increment_kn * 1e3) + 0.5));
 }
 
 class PullOut : public ::testing::TestWithParam<double> {};

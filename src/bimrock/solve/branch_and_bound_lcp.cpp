@@ -77,13 +77,16 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
     return make_lcp_result(problem, LcpStatus::solved, Eigen::VectorXd::Zero(n), 0);
   if (n > options_.max_size)
     return make_lcp_result(problem, LcpStatus::iteration_limit, Eigen::VectorXd::Zero(n), 0);
+  const double per_pivot = static_cast<double>(n) * static_cast<double>(n);
+  const double per_node = per_pivot * static_cast<double>(n) / 3.0;
   LcpPolyhedron polyhedron(problem);
   std::vector<std::vector<Fix>> stack{std::vector<Fix>(static_cast<std::size_t>(n), Fix::none)};
   bool complete = true;  // every node so far decided (none failed)
   int nodes = 0;
   Eigen::VectorXd last = Eigen::VectorXd::Zero(n);
   while (!stack.empty()) {
-    if (nodes >= options_.max_nodes)
+    const double work = nodes * per_node + static_cast<double>(polyhedron.pivots()) * per_pivot;
+    if (nodes >= options_.max_nodes || work > options_.max_work)
       return make_lcp_result(problem, LcpStatus::iteration_limit, last, nodes);
     const std::vector<Fix> fix = std::move(stack.back());
     stack.pop_back();

@@ -147,6 +147,10 @@ LcpPolyhedron::Vertex LcpPolyhedron::vertex(const std::vector<Fix>& fix) {
   return {Status::feasible, z * (q_max_ / m_max_)};
 }
 
+long LcpPolyhedron::pivots() const {
+  return glp_get_it_cnt(lp_->prob.p);
+}
+
 std::optional<Eigen::VectorXd> LcpPolyhedron::certificate() const {
   const Index n = problem_.size();
   if (n == 0)

@@ -41,6 +41,9 @@ class LcpPolyhedron {
   /// pair towards zero. `failed` where the simplex gave up (round-off).
   [[nodiscard]] Vertex vertex(const std::vector<Fix>& fix);
 
+  /// Simplex pivots of every vertex() so far: each costs about n^2 on this dense LP.
+  [[nodiscard]] long pivots() const;
+
   /// A Farkas certificate that the polyhedron (nothing held) is empty: r >= 0, |r|_inf = 1,
   /// M^T r <= 0, q . r < 0, as the LP found it (the caller checks it with
   /// certifies_infeasibility).
