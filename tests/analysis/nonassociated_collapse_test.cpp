@@ -1,7 +1,7 @@
 // The paper's example 2 (pull-out of a half-brick, Zhang & Lu) with cohesive and frictional
 // joints: whatever the dilation, from 0 to the friction angle, the analysis ends with a proven
-// collapse (a bracket and a mechanism), never stopped. The collapse load itself is checked
-// against independent numbers in tests/verification/; here the point is that the complete LCP
+// collapse (a bracket and a mechanism), never stopped, within Radenkovic's bounds (associated
+// analyses of this code, so a consistency test rather than a verification). The complete LCP
 // method decides every increment of non-associated flow, including the degenerate ones of
 // dilation 0 (opposite slip flows) on which Lemke's method ends on rays that prove nothing.
 #include <cmath>
@@ -23,22 +23,38 @@ CaseSpec pull_out_case(double friction_deg, double dilation_deg) {
   return testing::pull_out_case(s, 120e3, 30);
 }
 
-TEST(NonAssociatedCollapse, PullOutEndsWithAProvenCollapseForEveryDilation) {
-  for (const double psi : {0.0, 10.0, 20.0, 30.0}) {
-    const PlasticResult r = run_plastic_analysis(build_model(pull_out_case(30.0, psi)));
-    ASSERT_TRUE(r.collapse.has_value()) << "psi " << psi;
-    EXPECT_FALSE(r.stopped.has_value()) << "psi " << psi;
-    EXPECT_EQ(r.collapse->stage, 1);
-    EXPECT_LT(r.collapse->carried, r.collapse->failed);
-    EXPECT_LE(r.collapse->failed - r.collapse->carried,
-              2.0 * PlasticOptions{}.bracket_tolerance * r.collapse->failed);
-    EXPECT_FALSE(r.collapse->mechanism.empty()) << "psi " << psi;
-    EXPECT_FALSE(r.collapse->unstable_at_first_load);
-    // Above the cohesion-only collapse, P = 2 c (40 kN; friction only adds strength), and
-    // within the stage's 120 kN.
-    EXPECT_GT(r.collapse->carried * 120e3, 40e3) << "psi " << psi;
-  }
+// The collapse load factor's bracket of the pull-out with friction phi and dilation psi.
+Collapse pull_out_collapse(double phi, double psi) {
+  const PlasticResult r = run_plastic_analysis(build_model(pull_out_case(phi, psi)));
+  EXPECT_TRUE(r.collapse.has_value()) << "phi " << phi << ", psi " << psi;
+  EXPECT_FALSE(r.stopped.has_value()) << "phi " << phi << ", psi " << psi;
+  return r.collapse.value_or(Collapse{});
 }
 
+// Radenkovic's theorems bound the limit load of non-associated flow by two associated ones:
+// from above with the same yield surface (friction phi), from below with the largest surface
+// inside it whose normals are the flow directions. For a joint, flows (tan psi, +-1) and (1, 0)
+// in (sigma_n, tau), that surface is |tau| + sigma_n tan(psi) <= c with the same tension
+// cut-off: friction psi, the same cohesion (it lies inside the original for sigma_n <= 0). At
+// psi = 0 the lower bound is the cohesion-only pull-out, 2 c = 40 kN by plasticity theory
+// (verified in tests/verification/pull_out_test.cpp).
+TEST(NonAssociatedCollapse, PullOutCollapsesBetweenRadenkovicsBoundsForEveryDilation) {
+  const double phi = 30.0;
+  const Collapse upper = pull_out_collapse(phi, phi);
+  for (const double psi : {0.0, 10.0, 20.0, 30.0}) {
+    const Collapse c = pull_out_collapse(phi, psi);
+    const Collapse lower = pull_out_collapse(psi, psi);
+    EXPECT_EQ(c.stage, 1);
+    EXPECT_FALSE(c.mechanism.empty()) << "psi " << psi;
+    EXPECT_FALSE(c.unstable_at_first_load);
+    EXPECT_LE(c.failed - c.carried, 2.0 * PlasticOptions{}.bracket_tolerance * c.failed);
+    EXPECT_GE(c.failed, lower.carried) << "psi " << psi;
+    EXPECT_LE(c.carried, upper.failed) << "psi " << psi;
+    if (psi == 0.0) {
+      EXPECT_NEAR(lower.failed * 120e3, 40e3, 40e3 * 1e-3);
+      EXPECT_GT(c.carried * 120e3, 40e3);  // friction adds strength
+    }
+  }
+}
 }  // namespace
 }  // namespace bimrock
