@@ -31,6 +31,7 @@ struct Incline {
   double height = 0.5;
   double slope_deg = 20.0;
   double friction_deg = 30.0;
+  double dilation_deg = 0.0;
   double unit_weight = 20e3;
   double k = 1e9;  // k_n = k_s [Pa/m]
 
@@ -47,6 +48,7 @@ CaseSpec incline_case(const Incline& in, Vec2 push = Vec2::Zero(), int increment
   JointMaterial joint = testing::springs("joint", in.k, in.k);
   JointStrength s;
   s.friction = Softening::constant(std::tan(in.friction_deg * kDeg));
+  s.dilation = std::tan(in.dilation_deg * kDeg);
   joint.strength = s;
   c.joint_materials = {joint};
   c.blocks =
@@ -142,6 +144,44 @@ TEST(BlockOnIncline, TallBlockToppleAtExactlyAtanOfWidthOverHeight) {
   const PlasticResult r = run_plastic_analysis(build_model(incline_case(in)));
   ASSERT_TRUE(r.collapse.has_value());
   EXPECT_TRUE(topples(r));
+}
+
+// Dilation does not change any of these answers: one block's sliding or toppling is a unique
+// mechanism, and nothing confines the block's dilatant lift off the plane, so the statics
+// above hold for every dilation from 0 (non-associated) to the friction angle (associated).
+TEST(BlockOnIncline, EveryDilationStandsBelowSlidesAboveAndNeedsTheSamePush) {
+  for (const double psi : {0.0, 10.0, 20.0, 30.0}) {
+    Incline in;
+    in.dilation_deg = psi;
+    EXPECT_FALSE(run_plastic_analysis(build_model(incline_case(in))).collapse) << psi;
+    const double t = in.slope_deg * kDeg;
+    const double mu = std::tan(in.friction_deg * kDeg);
+    const double up = in.weight() * (std::sin(t) + std::cos(t) * mu);
+    const double down = in.weight() * (std::cos(t) * mu - std::sin(t));
+    EXPECT_NEAR(collapse_force(in, Vec2(-2.0 * in.weight(), 0)), up, 1e-6 * up) << psi;
+    EXPECT_NEAR(collapse_force(in, Vec2(2.0 * in.weight(), 0)), down, 1e-6 * down) << psi;
+    in.slope_deg = 35.0;
+    const PlasticResult r = run_plastic_analysis(build_model(incline_case(in)));
+    ASSERT_TRUE(r.collapse.has_value()) << psi;
+    EXPECT_FALSE(topples(r)) << psi;
+  }
+}
+
+TEST(BlockOnIncline, EveryDilationTopplesTheTallBlockAtAtanOfWidthOverHeight) {
+  const double critical = std::atan(1.0 / 2.5) / kDeg;  // 21.80 deg
+  for (const double psi : {0.0, 20.0, 40.0, 60.0}) {
+    Incline in;
+    in.width = 1.0;
+    in.height = 2.5;
+    in.friction_deg = 60.0;
+    in.dilation_deg = psi;
+    in.slope_deg = critical - 0.05;
+    EXPECT_FALSE(run_plastic_analysis(build_model(incline_case(in))).collapse) << psi;
+    in.slope_deg = critical + 0.05;
+    const PlasticResult r = run_plastic_analysis(build_model(incline_case(in)));
+    ASSERT_TRUE(r.collapse.has_value()) << psi;
+    EXPECT_TRUE(topples(r)) << psi;
+  }
 }
 
 Incline three_dec(double height, double friction_deg) {
