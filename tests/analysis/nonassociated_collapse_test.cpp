@@ -56,5 +56,24 @@ TEST(NonAssociatedCollapse, PullOutCollapsesBetweenRadenkovicsBoundsForEveryDila
     }
   }
 }
+// Displacement control passes the limit point of the equilibrium path: with dilation 0 the
+// pulled half-brick slides at a constant load, the plateau, and that load is the bracket that
+// load control proves by the complete method's exhausted searches (no solution beyond it).
+TEST(NonAssociatedCollapse, DisplacementControlPlateausWhereLoadControlProvesTheCollapse) {
+  const Collapse proven = pull_out_collapse(30.0, 0.0);
+  CaseSpec c = pull_out_case(30.0, 0.0);
+  StageSpec& pull = c.stages[1];
+  pull.increments = 40;
+  pull.control = DisplacementControlSpec{"A", Vec2::UnitX(), 4e-6, {0, "control"}};
+  const PlasticResult r = run_plastic_analysis(build_model(c));
+  ASSERT_FALSE(r.collapse.has_value());
+  ASSERT_FALSE(r.stopped.has_value());
+  // The last quarter of the stage is the plateau: every factor within the proven bracket.
+  for (std::size_t k = r.history.size() - 10; k < r.history.size(); ++k) {
+    EXPECT_GE(r.history[k].stage_factor, proven.carried * (1.0 - 1e-4)) << k;
+    EXPECT_LE(r.history[k].stage_factor, proven.failed * (1.0 + 1e-4)) << k;
+  }
+}
+
 }  // namespace
 }  // namespace bimrock
