@@ -13,6 +13,14 @@ find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 find_library(CHOLMOD_LIBRARY cholmod REQUIRED)
 # SuiteSparse's allocator hooks (solve/factor_memory.cpp) live in its config library.
 find_library(SUITESPARSECONFIG_LIBRARY suitesparseconfig REQUIRED)
+# UMFPACK (GPL-2.0-or-later): the sparse LU of the non-symmetric reduced tangent
+# (solve/unsymmetric_tangent.cpp).
+find_library(UMFPACK_LIBRARY umfpack REQUIRED)
+add_library(SuiteSparse::UMFPACK UNKNOWN IMPORTED)
+set_target_properties(SuiteSparse::UMFPACK PROPERTIES
+  IMPORTED_LOCATION "${UMFPACK_LIBRARY}"
+  INTERFACE_INCLUDE_DIRECTORIES "${CHOLMOD_INCLUDE_DIR}"
+  INTERFACE_LINK_LIBRARIES "${SUITESPARSECONFIG_LIBRARY}")
 add_library(SuiteSparse::CHOLMOD UNKNOWN IMPORTED)
 set_target_properties(SuiteSparse::CHOLMOD PROPERTIES
   IMPORTED_LOCATION "${CHOLMOD_LIBRARY}"

@@ -13,6 +13,7 @@
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/reduced_tangent.hpp>
 
+#include "solve/chain_lcp.hpp"
 #include "solve/random_lcp.hpp"
 
 namespace bimrock {
@@ -20,94 +21,10 @@ namespace {
 
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
-
-// A chain of blocks (6 unknowns each) joined by yield points as the analysis builds them: point
-// p between blocks p - 1 and p (block 0 to the ground) has a local strain E (2 x 12), springs
-// D, and two yield modes with gradients a (associated flow): C = a D E, Phi = C^T, N = a D a^T.
-// K = sum E^T D E plus a stiffness of each block's own: larger than the springs, so M is
-// positive definite.
-struct ChainLcp {
-  CholmodMatrix k_lower, c, phi, n;
-  SplitLcp split;
-  MatrixXd m_dense;
-  SparseCholesky k;
-};
-
-// With `uncoupled` >= 0, K leaves out the springs of that point, which then couples blocks K
-// does not (its C is a tenth of its springs', so that M stays positive definite).
-void make_chain(int blocks, unsigned seed, ChainLcp& out, int uncoupled = -1) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> stiffness(1.0, 3.0);
-  const int dofs = 6 * blocks;
-  const int rows = 2 * blocks;
-  MatrixXd k = MatrixXd::Zero(dofs, dofs);
-  MatrixXd c = MatrixXd::Zero(rows, dofs);
-  MatrixXd n = MatrixXd::Zero(rows, rows);
-  for (int b = 0; b < blocks; ++b)
-    k.block(6 * b, 6 * b, 6, 6) += testing::random_spd(6, rng);
-  for (int p = 0; p < blocks; ++p) {
-    const int first = p == 0 ? 0 : 6 * (p - 1);
-    const int width = p == 0 ? 6 : 12;
-    const MatrixXd e = testing::random_matrix(2, width, rng);
-    const Eigen::Vector2d d(stiffness(rng), stiffness(rng));
-    const MatrixXd a = testing::random_matrix(2, 2, rng) + 2.0 * MatrixXd::Identity(2, 2);
-    if (p != uncoupled)
-      k.block(first, first, width, width) += e.transpose() * d.asDiagonal() * e;
-    c.block(2 * p, first, 2, width) = (p == uncoupled ? 0.1 : 1.0) * a * d.asDiagonal() * e;
-    n.block(2 * p, 2 * p, 2, 2) = a * d.asDiagonal() * a.transpose();
-  }
-  out.k_lower = k.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
-  out.c = c.sparseView();
-  out.phi = c.transpose().sparseView();
-  out.n = n.sparseView();
-  out.m_dense = n - c * k.ldlt().solve(c.transpose());
-  out.split =
-      SplitLcp{&out.k_lower, &out.c, &out.phi, &out.n, testing::random_vector(rows, rng), {}, {}};
-  for (int r = 0; r < rows; ++r) {
-    out.split.group.push_back(r / 2);
-    out.split.group_rank.push_back(2);
-  }
-  out.k.analyze(out.k_lower, 6);
-  ASSERT_TRUE(out.k.factorize(out.k_lower));
-}
-
-// The second method: (M_AA + D) z_A = -q_A + D center_A with D = factor N_rr (no damping:
-// M_AA z_A = -q_A), formed densely and solved by LU; z = 0 off A.
-VectorXd dense_solution(const MatrixXd& m_dense, const CholmodMatrix& n, const VectorXd& q,
-                        const std::vector<Eigen::Index>& active,
-                        const ActiveSetEquations::Damping& damping) {
-  const auto k = static_cast<Eigen::Index>(active.size());
-  MatrixXd a(k, k);
-  VectorXd rhs(k);
-  for (Eigen::Index i = 0; i < k; ++i) {
-    for (Eigen::Index j = 0; j < k; ++j)
-      a(i, j) = m_dense(active[i], active[j]);
-    rhs(i) = -q(active[i]);
-    if (damping.factor.size() > 0) {
-      const double d = damping.factor(i) * n.coeff(active[i], active[i]);
-      a(i, i) += d;
-      rhs(i) += d * damping.center(active[i]);
-    }
-  }
-  const VectorXd za = a.partialPivLu().solve(rhs);
-  VectorXd z = VectorXd::Zero(q.size());
-  for (Eigen::Index i = 0; i < k; ++i)
-    z(active[i]) = za(i);
-  return z;
-}
-
-VectorXd dense_solution(const ChainLcp& chain, const std::vector<Eigen::Index>& active,
-                        const ActiveSetEquations::Damping& damping) {
-  return dense_solution(chain.m_dense, chain.n, chain.split.q, active, damping);
-}
-
-// Rows first, first + step, ... below size: an active set.
-std::vector<Eigen::Index> every(Eigen::Index step, Eigen::Index size, Eigen::Index first = 0) {
-  std::vector<Eigen::Index> rows;
-  for (Eigen::Index r = first; r < size; r += step)
-    rows.push_back(r);
-  return rows;
-}
+using testing::ChainLcp;
+using testing::dense_solution;
+using testing::every;
+using testing::make_chain;
 
 // A solution of the tangent's equations against the dense active block's (the second method):
 // z, and the undamped w = M z + q, to 1e-9.

@@ -25,6 +25,7 @@
 #include <bimrock/solve/lemke.hpp>
 #include <bimrock/solve/reduced_tangent.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
+#include <bimrock/solve/unsymmetric_tangent.hpp>
 #include <bimrock/solve/working_set_lcp.hpp>
 
 namespace bimrock {
@@ -679,7 +680,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
       LcpResult r;
       const Eigen::VectorXd* warm_start = warm.maxCoeff() > 0.0 ? &warm : nullptr;
       const bool tangent_route = opt.active_set && opt.reduced_tangent_rows >= 0 &&
-                                 warm.sum() >= opt.reduced_tangent_rows && lcp.symmetric();
+                                 warm.sum() >= opt.reduced_tangent_rows && !control;
       on_tangent = tangent_route;
       if (tangent_route) {
         // Many rows active: the equations of each active set on the sparse reduced tangent.
@@ -691,7 +692,13 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           split.group.push_back(lcp.group(i));
           split.group_rank.push_back(lcp.group_rank(i));
         }
-        ReducedTangentEquations equations(split, condensed.factor(), *solvers.tangent);
+        // Symmetric (associated flow): Cholesky, with the kept factor's updates; else LU.
+        std::unique_ptr<ActiveSetEquations> equations;
+        if (lcp.symmetric())
+          equations = std::make_unique<ReducedTangentEquations>(split, condensed.factor(),
+                                                                *solvers.tangent);
+        else
+          equations = std::make_unique<UnsymmetricTangentEquations>(split, condensed.factor());
         // Near a collapse, projected Newton can take many steps on a round's LCP that lacks the
         // points of the mechanism. After PlasticOptions::interrupt_after steps each iterate is
         // checked on every point, and points outside the LCP that it violates end the round at
@@ -716,9 +723,9 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           // certificate (docs/performance.md, session 17).
           return !outside.empty() || (around && ++stalled > opt.interrupt_after);
         };
-        r = solvers.active_set.solve(equations, warm_start, &interrupt);
+        r = solvers.active_set.solve(*equations, warm_start, &interrupt);
         t.active_set_iterations += r.steps;
-        t.tangent_factorizations += equations.factorizations();
+        t.tangent_factorizations += equations->factorizations();
         if (std::getenv("BIMROCK_DEBUG_LCP") && r.status != LcpStatus::solved)
           std::fprintf(stderr, "reduced tangent m=%d: %s after %d, worst residual %g\n", m,
                        to_string(r.status), r.steps, r.residuals.worst_relative());

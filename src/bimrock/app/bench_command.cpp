@@ -146,14 +146,15 @@ std::pair<int, int> plastic_zone(const Model& model, const std::vector<YieldPoin
           static_cast<int>(std::count(boundary.begin(), boundary.end(), 1))};
 }
 
-Run run_plastic(int n, int increments, const fs::path& scratch, TrialHints* hints) {
+Run run_plastic(int n, int increments, JointFlow flow, const fs::path& scratch, TrialHints* hints) {
   Run run;
   release_free_memory();
   const double before = static_cast<double>(current_memory_bytes());
   reset_peak_memory();
   auto start = Clock::now();
   // Pushed to 1.2 times the closed-form collapse thrust: collapses within the stage.
-  const Model model = build_model(abutment_case(n, increments, 1.2 * abutment_collapse_shear()));
+  const Model model =
+      build_model(abutment_case(n, increments, 1.2 * abutment_collapse_shear(), flow));
   add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
   PlasticOptions options;
   options.track_memory = true;
@@ -262,7 +263,7 @@ double mib(double bytes) {
 void print_row(const Row& r) {
   fmt::print("\n{} model, {} blocks, {} interfaces, {} unknowns", r.model, r.first.blocks,
              r.first.interfaces, r.first.unknowns);
-  if (r.model == "plastic")
+  if (r.model != "elastic")
     fmt::print(
         ", {} yield points, {} increments, largest LCP {} rows{}, K condensed {} times ({} "
         "regions), a reserve zone used {} times (last zone {} blocks)",
@@ -335,7 +336,7 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
   LinePlot time{
       "bimrock bench: time of a whole analysis", "blocks", "seconds (median)", {}, true, true};
   LinePlot memory{"bimrock bench: peak memory", "blocks", "MiB", {}, true, true};
-  for (const std::string model : {"elastic", "plastic"}) {
+  for (const std::string model : {"elastic", "plastic", "nonassociated"}) {
     PlotSeries t{model + " analysis", {}, {}}, l{model + ": CHOLMOD alone", {}, {}};
     PlotSeries m{model + " analysis", {}, {}}, ml{model + ": CHOLMOD alone", {}, {}};
     PlotSeries o{model + ": oracle (each LCP known)", {}, {}};
@@ -379,16 +380,19 @@ int run_bench(const BenchOptions& options) {
       std::vector<Run> runs;
       TrialHints hints;  // recorded by the first repetition, for the oracle
       const bool oracle = options.oracle && model == "plastic";
+      // "nonassociated": the plastic model with joints of no dilation.
+      const JointFlow flow =
+          model == "nonassociated" ? JointFlow::no_dilation : JointFlow::associated;
       for (int rep = 0; rep < options.repetitions; ++rep)
         runs.push_back(model == "elastic" ? run_elastic(n, scratch)
-                                          : run_plastic(n, options.increments, scratch,
+                                          : run_plastic(n, options.increments, flow, scratch,
                                                         oracle && rep == 0 ? &hints : nullptr));
       rows.push_back(summarize(model, runs));
       if (oracle) {
         hints.mode = TrialHints::Mode::replay;
         std::vector<Run> replays;
         for (int rep = 0; rep < options.repetitions; ++rep)
-          replays.push_back(run_plastic(n, options.increments, scratch, &hints));
+          replays.push_back(run_plastic(n, options.increments, flow, scratch, &hints));
         const Row replayed = summarize(model, replays);
         rows.back().oracle = replayed.total;
         rows.back().oracle_seconds = {replayed.median_seconds.begin(),

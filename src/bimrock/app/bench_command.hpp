@@ -10,7 +10,7 @@ namespace bimrock {
 struct BenchOptions {
   std::vector<std::string> models = {"elastic", "plastic"};
   std::vector<int> elastic_sizes = {1000, 10000, 100000};
-  std::vector<int> plastic_sizes = {100, 1000};
+  std::vector<int> plastic_sizes = {100, 1000};  ///< of both plastic models
   int repetitions = 3;
   int increments = 25;  ///< of the plastic model's loading stage
   std::string json;     ///< write the table as JSON here too ("" : no)

@@ -96,7 +96,9 @@ int main(int argc, char** argv) {
   CLI::App* bench_cmd = app.add_subcommand(
       "bench",
       "time whole analyses of generated models against CHOLMOD alone (docs/performance.md)");
-  bench_cmd->add_option("--models", bench.models, "elastic, plastic")->delimiter(',');
+  bench_cmd->add_option("--models", bench.models, "elastic, plastic, nonassociated")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"elastic", "plastic", "nonassociated"}));
   bench_cmd->add_option("--elastic-sizes", bench.elastic_sizes, "blocks of the elastic brick mass")
       ->delimiter(',');
   bench_cmd

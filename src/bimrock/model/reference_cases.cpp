@@ -121,7 +121,7 @@ double abutment_collapse_shear() {
          (b * (1.0 - kPressurePerShear * t));
 }
 
-CaseSpec abutment_case(int n_blocks, int increments, double shear) {
+CaseSpec abutment_case(int n_blocks, int increments, double shear, JointFlow flow) {
   const double size = kBrickHeight;
   const int ny = std::max(2, static_cast<int>(std::lround(std::sqrt(n_blocks / 2.0))));
   const int nx = std::max(
@@ -134,7 +134,7 @@ CaseSpec abutment_case(int n_blocks, int increments, double shear) {
   JointStrength s;
   s.cohesion = Softening::constant(kAbutmentCohesion);
   s.friction = Softening::constant(std::tan(kAbutmentFriction));
-  s.dilation = std::tan(kAbutmentFriction);
+  s.dilation = flow == JointFlow::associated ? std::tan(kAbutmentFriction) : 0.0;
   s.tensile = Softening::constant(kAbutmentTension);
   joint.strength = s;
   c.joint_materials = {joint};

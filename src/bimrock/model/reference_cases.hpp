@@ -20,16 +20,21 @@ CaseSpec wall_case(int n_blocks, int increments, double shear);
 /// tau W = c W + (unit weight x row height x W) tan(phi).
 double wall_collapse_shear();
 
+/// The flow rule of a generated case's joints: associated (dilation = friction), or
+/// non-associated without dilation (the joint most rock masses and masonry have).
+enum class JointFlow { associated, no_dilation };
+
 /// A bridge abutment near the crest of a jointed rock cliff, pushed to collapse: square 0.2 m
 /// blocks in staggered rows (bed joints continuous), about n_blocks of them, the mass twice as
 /// wide as deep (at least 8 m), fixed base, roller on the left side, the right side a free
-/// cliff face; joints with cohesion 50 kPa, friction 35 deg, associated flow, tensile strength
-/// 50 kPa. Stage 1: gravity. Stage 2: the abutment's thrust on a 2 m strip of the top ending
-/// 2 m from the cliff, a shear `shear` [Pa] towards the cliff with half as much pressure,
-/// raised in `increments` steps. The strip does not grow with the model: the plastic zone stays
-/// local in a large mass, as in most engineering models. Monitor "abutment" at the strip's
-/// outer end.
-CaseSpec abutment_case(int n_blocks, int increments, double shear);
+/// cliff face; joints with cohesion 50 kPa, friction 35 deg, tensile strength 50 kPa, and
+/// associated flow or none of dilation (`flow`). Stage 1: gravity. Stage 2: the abutment's thrust
+/// on a 2 m strip of the top ending 2 m from the cliff, a shear `shear` [Pa] towards the cliff with
+/// half as much pressure, raised in `increments` steps. The strip does not grow with the model: the
+/// plastic zone stays local in a large mass, as in most engineering models. Monitor "abutment" at
+/// the strip's outer end.
+CaseSpec abutment_case(int n_blocks, int increments, double shear,
+                       JointFlow flow = JointFlow::associated);
 
 /// The shear of abutment_case() at which the top row between the strip's inner end and the
 /// cliff slides out on its bed joint (limit equilibrium of that slab, its inner vertical joint

@@ -552,6 +552,17 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       LcpResult r = solved_or(LcpStatus::numerical_failure, iteration);
       if (r.status == LcpStatus::solved)
         return r;
+      if (!step.measured) {
+        // The solve's own equations left it short of the accuracy (a sparse LU of a
+        // non-symmetric tangent: ~1e-8): the same set, measured and refined.
+        ActiveSetEquations::Solution exact = problem.solve(rows);
+        if (exact.regular) {
+          z = std::move(exact.z);
+          r = solved_or(LcpStatus::numerical_failure, iteration);
+          if (r.status == LcpStatus::solved)
+            return r;
+        }
+      }
       z = iterate;
     }
     // Judice and Pires (1994): the block rule is trusted while it lowers the count of violated

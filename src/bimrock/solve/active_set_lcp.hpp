@@ -103,6 +103,8 @@ class ActiveSetEquations {
   [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active) {
     return solve(active, Damping{}, Check::measured);
   }
+  /// Numeric factorizations of a sparse tangent so far (0 where there is none).
+  [[nodiscard]] virtual int factorizations() const { return 0; }
   /// Any z with its w = M z + q and residuals on the whole LCP.
   [[nodiscard]] virtual LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) = 0;
 };

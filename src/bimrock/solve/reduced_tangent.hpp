@@ -112,7 +112,7 @@ class ReducedTangentEquations final : public ActiveSetEquations {
 
   /// Numeric factorizations of the tangent so far, the solves that reused a factor as it was,
   /// and those that reused it through a low-rank update (Woodbury).
-  [[nodiscard]] int factorizations() const { return factorizations_; }
+  [[nodiscard]] int factorizations() const override { return factorizations_; }
   [[nodiscard]] int reused_factors() const { return reused_; }
   [[nodiscard]] int updated_factors() const { return updated_; }
 

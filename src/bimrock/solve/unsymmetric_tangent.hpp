@@ -1,0 +1,64 @@
+#pragma once
+/// @file The active-set equations of a non-symmetric increment LCP (non-associated flow: C is
+/// not Phi^T, N not symmetric) solved on the sparse reduced tangent, as reduced_tangent.hpp
+/// does for symmetric ones. With the rows A active and x = S^-1 Phi_A z_A:
+///
+///   (S - Phi_A N_AA^-1 C_A) x = -Phi_A N_AA^-1 q_A,   z_A = N_AA^-1 (C_A x - q_A).
+///
+/// The tangent keeps the pattern of S (N_AA is local to each yield point) but not its symmetry,
+/// so it is factorized by sparse LU (UMFPACK), one factorization per active set; without
+/// symmetry there is no positive definiteness to test and no low-rank update whose inertia
+/// tells it, so neither the kept-factor updates nor the kernel search of the symmetric route
+/// apply. Each result is measured with S's own factor (x = S^-1 Phi z), refined once where the
+/// active rows miss their equations, and called singular where they still miss them: the
+/// dense route and the complete method then decide the LCP.
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/reduced_tangent.hpp>
+
+namespace bimrock {
+
+class UnsymmetricTangentEquations final : public ActiveSetEquations {
+ public:
+  /// @param s the factor of the stiffness the LCP is written on (K, or K condensed)
+  UnsymmetricTangentEquations(const SplitLcp& lcp, const SpdSolver& s);
+  ~UnsymmetricTangentEquations() override;
+  UnsymmetricTangentEquations(const UnsymmetricTangentEquations&) = delete;
+  UnsymmetricTangentEquations& operator=(const UnsymmetricTangentEquations&) = delete;
+
+  [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }
+  [[nodiscard]] const Eigen::VectorXd& q() const override { return lcp_.q; }
+  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override {
+    return lcp_.group[static_cast<std::size_t>(row)];
+  }
+  [[nodiscard]] int group_rank(Eigen::Index row) const override {
+    return lcp_.group_rank[static_cast<std::size_t>(row)];
+  }
+  using ActiveSetEquations::solve;
+  [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active, const Damping& damping,
+                               Check check) override;
+  [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
+
+  /// Numeric factorizations of the tangent so far.
+  [[nodiscard]] int factorizations() const override { return factorizations_; }
+
+ private:
+  struct Lu;
+  /// w = q + N z - C x and its scale |q| + |N| |z| + |C| |x|.
+  void residual(const Eigen::VectorXd& z, const Eigen::VectorXd& x, Eigen::VectorXd& w,
+                Eigen::VectorXd& scale) const;
+
+  const SplitLcp& lcp_;
+  const SpdSolver& s_;
+  CholmodMatrix s_full_;        // S, both triangles
+  CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
+  CholmodMatrix n_transposed_;  // m x m: the rows of N as columns
+  std::unique_ptr<Lu> lu_;
+  int factorizations_ = 0;
+};
+
+}  // namespace bimrock

@@ -1,0 +1,79 @@
+// The active-set equations of a non-symmetric LCP (non-associated flow) on the sparse reduced
+// tangent, factorized by LU. Expected numbers come from a second method on the same LCP: the
+// dense matrix M = N - C K^-1 Phi formed with a dense LDLT of K, solved by a dense LU (one
+// active set) or by Lemke (the whole LCP: M is positive definite, a P-matrix, so the solution
+// is unique).
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/lemke.hpp>
+#include <bimrock/solve/unsymmetric_tangent.hpp>
+
+#include "solve/chain_lcp.hpp"
+
+namespace bimrock {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+using testing::ChainLcp;
+using testing::dense_solution;
+using testing::every;
+using testing::make_chain;
+
+void make_nonassociated_chain(int blocks, unsigned seed, ChainLcp& chain) {
+  make_chain(blocks, seed, chain, -1, 0.02);
+  // The premise: M is not symmetric, but positive definite (x.M x > 0 for x != 0).
+  const MatrixXd sym = 0.5 * (chain.m_dense + chain.m_dense.transpose());
+  ASSERT_GT((chain.m_dense - chain.m_dense.transpose()).cwiseAbs().maxCoeff(),
+            1e-3 * chain.m_dense.cwiseAbs().maxCoeff());
+  ASSERT_GT(Eigen::SelfAdjointEigenSolver<MatrixXd>(sym).eigenvalues().minCoeff(), 0.0);
+}
+
+TEST(UnsymmetricTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
+  ChainLcp chain;
+  make_nonassociated_chain(40, 5, chain);
+  UnsymmetricTangentEquations equations(chain.split, chain.k);
+  for (const Eigen::Index step : {1, 2, 3}) {
+    const std::vector<Eigen::Index> active = every(step, equations.size());
+    const ActiveSetEquations::Solution s = equations.solve(active);
+    ASSERT_TRUE(s.regular);
+    const VectorXd z = dense_solution(chain, active, {});
+    const VectorXd w = chain.m_dense * z + chain.split.q;
+    EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff()) << step;
+    EXPECT_LE((s.w - w).cwiseAbs().maxCoeff(), 1e-9 * chain.split.q.cwiseAbs().maxCoeff()) << step;
+  }
+  EXPECT_EQ(equations.factorizations(), 3);
+}
+
+TEST(UnsymmetricTangent, TheActiveSetMethodOnItFindsLemkesSolution) {
+  for (const unsigned seed : {1u, 2u, 3u, 4u}) {
+    ChainLcp chain;
+    make_nonassociated_chain(30, seed, chain);
+    UnsymmetricTangentEquations equations(chain.split, chain.k);
+    ActiveSetLcp solver;
+    const LcpResult r = solver.solve(equations);
+    ASSERT_EQ(r.status, LcpStatus::solved) << seed;
+    Lemke lemke;
+    const LcpResult second = lemke.solve(LcpProblem{chain.m_dense, chain.split.q});
+    ASSERT_EQ(second.status, LcpStatus::solved);
+    EXPECT_LE((r.z - second.z).cwiseAbs().maxCoeff(), 1e-8 * second.z.cwiseAbs().maxCoeff())
+        << seed;
+    EXPECT_GT(equations.factorizations(), 0);
+  }
+}
+
+TEST(UnsymmetricTangent, ASingularLocalBlockIsLeftToTheDenseRoute) {
+  ChainLcp chain;
+  make_nonassociated_chain(10, 9, chain);
+  // Both modes of point 0 with their local block made singular (its rows equal).
+  chain.n.coeffRef(1, 0) = chain.n.coeff(0, 0);
+  chain.n.coeffRef(1, 1) = chain.n.coeff(0, 1);
+  UnsymmetricTangentEquations equations(chain.split, chain.k);
+  EXPECT_FALSE(equations.solve({0, 1}).regular);
+}
+
+}  // namespace
+}  // namespace bimrock
