@@ -6,6 +6,7 @@
 
 #include <bimrock/io/block_picture.hpp>
 #include <bimrock/io/history_writer.hpp>
+#include <bimrock/io/mechanism_table.hpp>
 #include <bimrock/io/run_summary.hpp>
 #include <bimrock/io/state_tables.hpp>
 
@@ -67,7 +68,12 @@ double estimate_output_bytes(const Model& model, const OutputOptions& options) {
   // The tables of the final state and the history: a few hundred bytes per row.
   const double tables = options.csv ? 200.0 * cells : 0.0;
   const double history = 200.0 * (1.0 + static_cast<double>(model.monitors.size())) * steps;
-  return (options.vtk ? steps * step : 0.0) + tables + history + 1e6;  // + pictures, summary
+  // On collapse: mechanism.csv (about 150 bytes a block), the block lists in summary.json, and
+  // the last step's point array of mechanism velocities (3 values a point, Base64).
+  const double mechanism =
+      160.0 * model.n_blocks() + (options.vtk ? 4.0 / 3.0 * 24.0 * points : 0.0);
+  const double pictures_and_summary = 1e6;
+  return (options.vtk ? steps * step : 0.0) + tables + history + mechanism + pictures_and_summary;
 }
 
 void check_output_size(const Model& model, const Case& c) {
@@ -141,6 +147,18 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
   write_history_csv(model_, result, dir / "history.csv");
   files.push_back("history.csv");
   write_history_plots(model_, result, dir);
+  if (result.collapse && result.collapse->direction.size() == model_.n_dofs()) {
+    const MechanismBlocks mechanism = mechanism_blocks(model_, result.collapse->direction);
+    write_mechanism_csv(model_, mechanism, dir / "mechanism.csv");
+    files.push_back("mechanism.csv");
+    if (options_.vtk && !steps_.empty()) {
+      // The last step written again, now that the collapse is known, with the mechanism's
+      // velocities as a point array.
+      const Eigen::VectorXd velocities = stacked_velocities(mechanism);
+      write_vtu(model_, fields, {&index_, &result.state.points}, dir / steps_.back().file,
+                &velocities);
+    }
+  }
   for (const Monitor& m : model_.monitors)
     files.insert(files.end(), {"plot_" + m.name + ".png", "plot_" + m.name + ".svg"});
   if (options_.vtk) {

@@ -1,7 +1,8 @@
 #pragma once
 /// @file The results folder of a run (DESIGN.md section 4), written all or nothing: summary.json,
 /// blocks.csv, interfaces.csv, vtk/step_NNNN.vtu + results.pvd, and for a nonlinear run
-/// history.csv, the load-displacement plots and pictures of the final state and the mechanism.
+/// history.csv, the load-displacement plots and pictures of the final state and the mechanism,
+/// and on collapse mechanism.csv (with the mechanism's velocities in the last VTU step).
 #include <filesystem>
 #include <memory>
 #include <string>

@@ -1,5 +1,9 @@
 #include <bimrock/io/run_summary.hpp>
 
+#include <map>
+
+#include <bimrock/analysis/mechanism_blocks.hpp>
+#include <bimrock/analysis/mechanism_joints.hpp>
 #include <bimrock/assembly/yield_points.hpp>
 #include <bimrock/io/history_writer.hpp>
 #include <bimrock/io/text_file.hpp>
@@ -32,8 +36,12 @@ json timings_json(const Timings& t) {
   return j;
 }
 
-json mechanism_json(const std::vector<YieldPoint>& points, const Collapse& c) {
+json mechanism_json(const std::vector<YieldPoint>& points, const Collapse& c,
+                    const std::vector<MechanismJoint>& joints) {
   static constexpr const char* kJointModes[] = {"slip+", "slip-", "opening"};
+  std::map<int, JointMotion> net;
+  for (const MechanismJoint& j : joints)
+    net[j.point] = j.motion;
   json list = json::array();
   for (const MechanismEntry& e : c.mechanism) {
     const YieldPoint& p = points[static_cast<std::size_t>(e.point)];
@@ -43,11 +51,45 @@ json mechanism_json(const std::vector<YieldPoint>& points, const Collapse& c) {
       item["block_i"] = p.block_i;
       item["block_j"] = p.block_j;
       item["mode"] = e.mode >= 0 && e.mode < 3 ? kJointModes[e.mode] : "?";
+      const auto it = net.find(e.point);
+      if (it != net.end())
+        item["net_mode"] = joint_motion_name(it->second);
     } else {
       item["block"] = p.owner;
       item["mode"] = "plane " + std::to_string(e.mode);
     }
     list.push_back(std::move(item));
+  }
+  return list;
+}
+
+json mechanism_blocks_json(const MechanismBlocks& m) {
+  json moves = json::array();
+  json rotates = json::array();
+  json stands = json::array();
+  for (std::size_t b = 0; b < m.blocks.size(); ++b) {
+    const BlockMotion motion = m.blocks[b].motion;
+    (motion == BlockMotion::moves     ? moves
+     : motion == BlockMotion::rotates ? rotates
+                                      : stands)
+        .push_back(b);
+  }
+  return {{"moves", moves}, {"rotates", rotates}, {"stands", stands}};
+}
+
+json mechanism_joints_json(const std::vector<YieldPoint>& points,
+                           const std::vector<MechanismJoint>& joints) {
+  json list = json::array();
+  for (const MechanismJoint& j : joints) {
+    const YieldPoint& p = points[static_cast<std::size_t>(j.point)];
+    list.push_back({{"interface", p.owner},
+                    {"block_i", p.block_i},
+                    {"block_j", p.block_j},
+                    {"x_m", p.position.x()},
+                    {"y_m", p.position.y()},
+                    {"delta_n", j.delta(0)},
+                    {"delta_s", j.delta(1)},
+                    {"net_mode", joint_motion_name(j.motion)}});
   }
   return list;
 }
@@ -103,13 +145,19 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
       const Collapse& c = *plastic->collapse;
       const Stage& st = model.stages[static_cast<std::size_t>(c.stage)];
       const double load = point_load_resultant(st);
+      const MechanismBlocks blocks = mechanism_blocks(model, c.direction);
+      const std::vector<MechanismJoint> joints =
+          mechanism_joints(model, plastic->points, c, blocks.scale);
       j["collapse"] = {{"stage", st.name},
                        {"carried_factor", c.carried},
                        {"failed_factor", c.failed},
                        {"carried_point_load_N", c.carried * load},
                        {"failed_point_load_N", c.failed * load},
                        {"unstable_at_first_load", c.unstable_at_first_load},
-                       {"mechanism", mechanism_json(plastic->points, c)}};
+                       {"mechanism", mechanism_json(plastic->points, c, joints)},
+                       {"mechanism_joints", mechanism_joints_json(plastic->points, joints)}};
+      if (c.direction.size() == model.n_dofs())
+        j["collapse"]["mechanism_blocks"] = mechanism_blocks_json(blocks);
     } else {
       j["collapse"] = nullptr;
     }

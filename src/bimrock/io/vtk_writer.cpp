@@ -73,17 +73,19 @@ int block_state_code(const PlasticParts& plastic, int b) {
 }  // namespace
 
 void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticParts& plastic,
-               const std::filesystem::path& file) {
+               const std::filesystem::path& file, const Eigen::VectorXd* mechanism) {
   const int nb = model.n_blocks();
   const int nf = model.n_interfaces();
   const int cells = nb + nf;
   // Points: the corners of every block, then the two ends of every interface.
   std::vector<Vec2> points;
   std::vector<Vec2> moves;
+  std::vector<int> owners;  // the block whose motion each point follows
   std::vector<std::int64_t> offsets;
   for (int b = 0; b < nb; ++b) {
     for (const Vec2& v : model.blocks[static_cast<std::size_t>(b)].polygon.vertices) {
       points.push_back(v);
+      owners.push_back(b);
       moves.push_back(displacement_at(model, b, v, fields.u));
     }
     offsets.push_back(static_cast<std::int64_t>(points.size()));
@@ -91,6 +93,7 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
   for (const Interface& f : model.interfaces) {
     for (const Vec2& v : {f.segment.a, f.segment.b}) {
       points.push_back(v);
+      owners.push_back(f.block_i);
       moves.push_back(displacement_at(model, f.block_i, v, fields.u));
     }
     offsets.push_back(static_cast<std::int64_t>(points.size()));
@@ -120,6 +123,14 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
   out << "      </Cells>\n      <PointData Vectors=\"displacement\">\n";
   data_array(out, "displacement", 3, static_cast<int>(moves.size()),
              [&](int p, int k) { return k < 2 ? moves[static_cast<std::size_t>(p)](k) : 0.0; });
+  if (mechanism && mechanism->size() == model.n_dofs()) {
+    std::vector<Vec2> velocities(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+      velocities[k] = displacement_at(model, owners[k], points[k], *mechanism);
+    data_array(
+        out, "mechanism_velocity", 3, static_cast<int>(velocities.size()),
+        [&](int p, int k) { return k < 2 ? velocities[static_cast<std::size_t>(p)](k) : 0.0; });
+  }
   out << "      </PointData>\n      <CellData>\n";
 
   auto block = [&](int c) -> const BlockState* {

@@ -18,10 +18,14 @@ namespace bimrock {
 ///  block_state (0 elastic, 1 yielded),
 ///  sigma_n, tau (Pa, mean of the two integration points), delta_n, delta_s (m, mean),
 ///  plastic_delta [n, s] (m, mean), interface_state (0 elastic, 1 slipped, 2 open).
-/// Point array: displacement [ux, uy, 0] (m).
+/// Point arrays: displacement [ux, uy, 0] (m); with `mechanism`, also mechanism_velocity
+/// [vx, vy, 0]: Q(x, y) times the block's 6 entries of the mechanism (dimensionless; an
+/// interface's points take block i's).
 /// @param plastic the plastic state of a nonlinear analysis (empty for an elastic one)
+/// @param mechanism the velocities of a collapse mechanism, 6 per block (normalized:
+///   MechanismBlocks), or nullptr for none
 void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticParts& plastic,
-               const std::filesystem::path& file);
+               const std::filesystem::path& file, const Eigen::VectorXd* mechanism = nullptr);
 
 struct PvdEntry {
   double time = 0.0;  ///< shown by ParaView as the time of the step (e.g. the load factor)
