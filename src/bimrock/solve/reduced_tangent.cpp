@@ -13,9 +13,6 @@
 namespace bimrock {
 
 namespace {
-/// A local block N_gg whose reciprocal condition is below this is singular (e.g. both slip
-/// modes of a frictionless joint point): left to the dense route.
-constexpr double kSingularLocal = 1e-12;
 /// Shifts, relative to diag(K), under which a tangent that is singular at a mechanism is
 /// positive definite (the smallest that works: the kernel's accuracy is about the shift times
 /// the condition of K, and the certificate needs ~1e-8), and the inverse iterations that find
@@ -29,10 +26,6 @@ constexpr Eigen::Index kMostUpdatedRows = 256;
 /// The capacitance matrix of an update is singular below this relative eigenvalue (the new
 /// tangent is then nearly singular: left to a factorization, which finds a mechanism).
 constexpr double kSingularCapacitance = 1e-12;
-/// A solve must meet the active rows' equations to this relative residual (the LCP asks for
-/// 1e-9), else it is refined once, and one through an update, if still short of it, is done
-/// again on a factorized tangent.
-constexpr double kSolveAccuracy = 1e-10;
 /// Right-hand sides solved together (see solve_in_chunks).
 constexpr Eigen::Index kSolveChunk = 32;
 }  // namespace
@@ -47,49 +40,6 @@ struct ReducedTangentEquations::Update {
   Eigen::MatrixXd vectors;
   Eigen::VectorXd inverse_values;
 };
-
-struct ReducedTangentEquations::Local {
-  std::size_t first;        // its first row's place in `active`
-  Eigen::MatrixXd inverse;  // N_gg^-1 of its active rows
-};
-
-// C_R x on the rows of one local block (the rates of their yield functions).
-Eigen::VectorXd ReducedTangentEquations::strain(const std::vector<Eigen::Index>& active,
-                                                const Local& l, const Eigen::VectorXd& x) const {
-  Eigen::VectorXd out(l.inverse.rows());
-  for (Eigen::Index i = 0; i < out.size(); ++i) {
-    double cx = 0.0;
-    for (CholmodMatrix::InnerIterator c(c_transposed_,
-                                        active[l.first + static_cast<std::size_t>(i)]);
-         c; ++c)
-      cx += c.value() * x(c.row());
-    out(i) = cx;
-  }
-  return out;
-}
-
-void ReducedTangentEquations::residual(const Eigen::VectorXd& z, const Eigen::VectorXd& x,
-                                       Eigen::VectorXd& w, Eigen::VectorXd& scale) const {
-  const Eigen::Index m = size();
-  w.resize(m);
-  scale.resize(m);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    double wi = lcp_.q(i);
-    double si = std::abs(wi);
-    for (CholmodMatrix::InnerIterator e(n_transposed_, i); e; ++e) {
-      const double term = e.value() * z(e.row());
-      wi += term;
-      si += std::abs(term);
-    }
-    for (CholmodMatrix::InnerIterator e(c_transposed_, i); e; ++e) {
-      const double term = e.value() * x(e.row());
-      wi -= term;
-      si += std::abs(term);
-    }
-    w(i) = wi;
-    scale(i) = si;
-  }
-}
 
 Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
                                                    const std::vector<Eigen::Index>& active,
@@ -131,7 +81,7 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
     return {};
   r = r.cwiseMax(0.0) / r.maxCoeff();  // certifies_infeasibility tolerates -1e-8 only
   // The certificate is checked on the LCP itself, with K: M r = N r - C K^-1 Phi r.
-  const Eigen::VectorXd x = k_.solve(Eigen::VectorXd(*lcp_.phi * r));
+  const Eigen::VectorXd x = s_.solve(Eigen::VectorXd(*lcp_.phi * r));
   const Eigen::VectorXd mr = *lcp_.n * r - *lcp_.c * x;
   const Eigen::VectorXd sizes = lcp_.n->cwiseAbs() * r + lcp_.c->cwiseAbs() * x.cwiseAbs();
   const double m_max = lcp_.n->diagonal().cwiseAbs().maxCoeff();  // M_ii <= N_ii
@@ -142,11 +92,8 @@ Eigen::VectorXd ReducedTangentEquations::mechanism(const CholmodMatrix& tangent,
 
 ReducedTangentEquations::ReducedTangentEquations(const SplitLcp& lcp, const SpdSolver& k,
                                                  TangentFactor& tangent, TangentUpdateLimits limits)
-    : lcp_(lcp),
-      k_(k),
+    : SplitLcpEquations(lcp, k),
       tangent_(tangent),
-      c_transposed_(lcp.c->transpose()),
-      n_transposed_(lcp.n->transpose()),
       n_diagonal_(lcp.n->diagonal()),
       limits_(limits) {}
 
@@ -417,9 +364,7 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Ei
 
 std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update, Check check) {
-  const bool damped = damping.factor.size() > 0;
   const Eigen::Index m = size();
-  const Eigen::Index n = lcp_.k_lower->rows();
   Solution out;
   out.z = Eigen::VectorXd::Zero(m);
   if (active.empty()) {  // then x = 0: no factorization
@@ -428,33 +373,19 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     out.regular = true;
     return out;
   }
-  // N_AA^-1 group by group (the active rows of a group are consecutive in `active`).
-  std::vector<Local> locals;
+  // N_AA^-1 group by group, and the terms Phi_g N_gg^-1 C_g that describe the tangent.
+  const std::optional<std::vector<Local>> found = locals(active, damping);
+  if (!found)
+    return out;
+  const std::vector<Local>& locals = *found;
   std::vector<TangentTerm> terms;
-  for (std::size_t a = 0; a < active.size();) {
-    std::size_t b = a;
-    while (b < active.size() && group(active[b]) == group(active[a]))
-      ++b;
-    const auto r = static_cast<Eigen::Index>(b - a);
-    Eigen::MatrixXd local(r, r);
-    for (Eigen::Index i = 0; i < r; ++i)
-      for (Eigen::Index j = 0; j < r; ++j)
-        local(i, j) = lcp_.n->coeff(active[a + static_cast<std::size_t>(i)],
-                                    active[a + static_cast<std::size_t>(j)]);
-    if (damped)
-      for (Eigen::Index i = 0; i < r; ++i)
-        local(i, i) *= 1.0 + damping.factor(static_cast<Eigen::Index>(a) + i);
-    const Eigen::PartialPivLU<Eigen::MatrixXd> lu(local);
-    if (!(lu.rcond() > kSingularLocal))
-      return out;
-    locals.push_back(Local{a, lu.inverse()});
-    TangentTerm term{group(active[a]), {}, {}, std::move(local)};
-    for (std::size_t i = a; i < b; ++i) {
+  for (const Local& l : locals) {
+    TangentTerm term{group(active[l.first]), {}, {}, l.block};
+    for (std::size_t i = l.first; i < l.first + static_cast<std::size_t>(l.block.rows()); ++i) {
       term.modes.push_back(mode(active[i]));
       term.phi.emplace_back(lcp_.phi->col(active[i]));
     }
     terms.push_back(std::move(term));
-    a = b;
   }
   // The kept factor, as it is or updated, else the lower triangle of K - Phi_A N_AA^-1 C_A
   // factorized.
@@ -475,92 +406,19 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     tangent_.terms = std::move(terms);
   }
   const Update* through = update ? &*update : nullptr;
-  // z_A with M_AA z_A = -v_A, through the tangent: S x = -Phi_A N_AA^-1 v_A, then
-  // z_A = N_AA^-1 (C_A x - v_A). Added to out.z.
-  Eigen::VectorXd x;  // the plastic displacements: of the last solve, then as measured
-  auto add_solution = [&](const Eigen::VectorXd& v) {
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n);
-    std::vector<Eigen::VectorXd> t(locals.size());
-    for (std::size_t g = 0; g < locals.size(); ++g) {
-      const Local& l = locals[g];
-      Eigen::VectorXd v_local(l.inverse.rows());
-      for (Eigen::Index i = 0; i < v_local.size(); ++i)
-        v_local(i) = v(active[l.first + static_cast<std::size_t>(i)]);
-      const Eigen::VectorXd nv = l.inverse * v_local;
-      for (Eigen::Index i = 0; i < v_local.size(); ++i)
-        for (CholmodMatrix::InnerIterator p(*lcp_.phi,
-                                            active[l.first + static_cast<std::size_t>(i)]);
-             p; ++p)
-          rhs(p.row()) -= p.value() * nv(i);
-      t[g] = std::move(v_local);
-    }
-    x = solve_tangent(rhs, through);
-    for (std::size_t g = 0; g < locals.size(); ++g) {
-      const Local& l = locals[g];
-      const Eigen::VectorXd z_local = l.inverse * (strain(active, l, x) - t[g]);
-      for (Eigen::Index i = 0; i < z_local.size(); ++i)
-        out.z(active[l.first + static_cast<std::size_t>(i)]) += z_local(i);
-    }
-  };
-  // The result measured with K's own factor: w = q + N z - C K^-1 Phi z, and the residual of
-  // the active rows' equations, (M_AA + D) z_A + q_A - D center_A (the damping D (z - center)
-  // is D z on the left and -D center in q).
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(m);
-  if (damped)
-    for (std::size_t r = 0; r < active.size(); ++r)
-      d(active[r]) =
-          damping.factor(static_cast<Eigen::Index>(r)) * lcp_.n->coeff(active[r], active[r]);
-  const Eigen::VectorXd shifted_q =
-      damped ? Eigen::VectorXd(q() - d.cwiseProduct(damping.center)) : q();
-  auto measure = [&] {
-    x = k_.solve(Eigen::VectorXd(*lcp_.phi * out.z));
-    residual(out.z, x, out.w, out.w_scale);
-    double worst = 0.0;
-    for (Eigen::Index i : active) {
-      const double residual = out.w(i) + d(i) * (out.z(i) - (damped ? damping.center(i) : 0.0));
-      if (residual == 0.0)
-        continue;  // also where the row's scale is 0
-      const double relative = std::abs(residual) / out.w_scale(i);
-      if (std::isnan(relative))
-        return std::numeric_limits<double>::infinity();
-      worst = std::max(worst, relative);
-    }
-    return worst;
-  };
-  add_solution(shifted_q);
+  const double worst = solve_through(
+      active, locals, damping, check,
+      [&](const Eigen::VectorXd& rhs) { return solve_tangent(rhs, through); }, out);
   if (check == Check::from_solve) {
-    // w from the tangent's own x: w_A = 0 up to its round-off, and w off A as the solve left it.
-    residual(out.z, x, out.w, out.w_scale);
-    out.measured = false;
     out.regular = true;
     return out;
   }
-  double worst = measure();
-  // Near a mechanism the tangent is ill-conditioned (K and the plastic part nearly cancel):
-  // then one step of refinement on the LCP's own equations, its residual measured with K.
-  if (!(worst <= kSolveAccuracy)) {
-    add_solution(
-        Eigen::VectorXd(shifted_q + *lcp_.n * out.z - *lcp_.c * x + d.cwiseProduct(out.z)));
-    worst = measure();
-  }
+  // A solve through an update that still misses the accuracy is done again on a factorized
+  // tangent.
   if (through != nullptr && through->p.cols() > 0 && !(worst <= kSolveAccuracy))
     return std::nullopt;
   out.regular = true;
   return out;
-}
-
-LcpResult ReducedTangentEquations::result(LcpStatus status, Eigen::VectorXd z, int steps) {
-  LcpResult r;
-  r.status = status;
-  const Eigen::VectorXd x = z.size() > 0 && z.cwiseAbs().maxCoeff() > 0.0
-                                ? k_.solve(Eigen::VectorXd(*lcp_.phi * z))
-                                : Eigen::VectorXd::Zero(lcp_.k_lower->rows());
-  Eigen::VectorXd sizes;
-  residual(z, x, r.w, sizes);
-  r.residuals = measure(z, r.w, sizes);
-  r.z = std::move(z);
-  r.steps = steps;
-  return r;
 }
 
 }  // namespace bimrock

@@ -1,7 +1,8 @@
 #pragma once
 /// @file The active-set equations of the increment LCP w = q + (N - C K^-1 Phi) z solved on the
-/// sparse reduced tangent instead of the dense active block (issue 5, route b). With the rows A
-/// active (w_A = 0, z = 0 elsewhere) and x = K^-1 Phi_A z_A the plastic displacements:
+/// sparse reduced tangent instead of the dense active block, for symmetric LCPs (associated
+/// flow). With the rows A active (w_A = 0, z = 0 elsewhere) and x = K^-1 Phi_A z_A the plastic
+/// displacements (split_lcp_equations.hpp):
 ///
 ///   (K - Phi_A N_AA^-1 C_A) x = -Phi_A N_AA^-1 q_A,   z_A = N_AA^-1 (C_A x - q_A),
 ///   w = q + N z - C x.
@@ -26,22 +27,10 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
+#include <bimrock/solve/split_lcp_equations.hpp>
 
 namespace bimrock {
-
-/// The sparse parts of the increment LCP (eqs. 24, 28), all in the unknowns of K and the LCP's
-/// rows. The rows of a group (the modes of one yield point) are consecutive.
-struct SplitLcp {
-  const CholmodMatrix* k_lower = nullptr;  ///< n x n, lower triangle of K
-  const CholmodMatrix* c = nullptr;        ///< m x n
-  const CholmodMatrix* phi = nullptr;      ///< n x m
-  const CholmodMatrix* n = nullptr;        ///< m x m, block diagonal by group
-  Eigen::VectorXd q;                       ///< m
-  std::vector<Eigen::Index> group;         ///< per row: its group
-  std::vector<int> group_rank;             ///< per row: independent rows of its group at most
-};
 
 using SparseColumn = Eigen::SparseVector<double, Eigen::ColMajor, std::int64_t>;
 
@@ -84,21 +73,13 @@ struct TangentUpdateLimits {
   double new_columns = -1.0;
 };
 
-class ReducedTangentEquations final : public ActiveSetEquations {
+class ReducedTangentEquations final : public SplitLcpEquations {
  public:
   /// @param k the factor of K (to measure results)
   /// @param tangent analyzed here when its pattern is not the tangent's
   ReducedTangentEquations(const SplitLcp& lcp, const SpdSolver& k, TangentFactor& tangent,
                           TangentUpdateLimits limits = {});
 
-  [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }
-  [[nodiscard]] const Eigen::VectorXd& q() const override { return lcp_.q; }
-  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override {
-    return lcp_.group[static_cast<std::size_t>(row)];
-  }
-  [[nodiscard]] int group_rank(Eigen::Index row) const override {
-    return lcp_.group_rank[static_cast<std::size_t>(row)];
-  }
   [[nodiscard]] bool symmetric() const override { return true; }
   using ActiveSetEquations::solve;
   /// The damping scales N_rr (it is added to N_AA: the tangent keeps K's pattern).
@@ -108,7 +89,6 @@ class ReducedTangentEquations final : public ActiveSetEquations {
                                Check check) override;
   /// M_rr = N_rr - phi_r . K^-1 phi_r <= N_rr.
   [[nodiscard]] double diagonal_bound(Eigen::Index row) const override { return n_diagonal_(row); }
-  [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
 
   /// Numeric factorizations of the tangent so far, the solves that reused a factor as it was,
   /// and those that reused it through a low-rank update (Woodbury).
@@ -117,7 +97,6 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   [[nodiscard]] int updated_factors() const { return updated_; }
 
  private:
-  struct Local;
   struct Update;
   /// The solve of the new tangent through the kept factor of another one when they differ in
   /// few groups (S_new = S_kept - P D P^T, Woodbury), or nothing if they differ in too many or
@@ -130,8 +109,6 @@ class ReducedTangentEquations final : public ActiveSetEquations {
   [[nodiscard]] std::optional<Solution> solve_on(const std::vector<Eigen::Index>& active,
                                                  const Damping& damping, bool may_update,
                                                  Check check);
-  [[nodiscard]] Eigen::VectorXd strain(const std::vector<Eigen::Index>& active, const Local& l,
-                                       const Eigen::VectorXd& x) const;
   /// K - Phi_A N_AA^-1 C_A (lower triangle), formed in TangentFactor::matrix.
   [[nodiscard]] const CholmodMatrix& form_tangent(const std::vector<Eigen::Index>& active,
                                                   const std::vector<Local>& locals);
@@ -145,15 +122,7 @@ class ReducedTangentEquations final : public ActiveSetEquations {
                                           const std::vector<Eigen::Index>& active,
                                           const std::vector<Local>& locals);
 
-  const SplitLcp& lcp_;
-  const SpdSolver& k_;
   TangentFactor& tangent_;
-  /// w = q + N z - C x and its scale |q| + |N| |z| + |C| |x|, row by row in one pass.
-  void residual(const Eigen::VectorXd& z, const Eigen::VectorXd& x, Eigen::VectorXd& w,
-                Eigen::VectorXd& scale) const;
-
-  CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
-  CholmodMatrix n_transposed_;  // m x m: the rows of N as columns
   Eigen::VectorXd n_diagonal_;
   TangentUpdateLimits limits_;
   int factorizations_ = 0;

@@ -17,12 +17,11 @@
 
 #include <Eigen/Core>
 
-#include <bimrock/solve/active_set_lcp.hpp>
-#include <bimrock/solve/reduced_tangent.hpp>
+#include <bimrock/solve/split_lcp_equations.hpp>
 
 namespace bimrock {
 
-class UnsymmetricTangentEquations final : public ActiveSetEquations {
+class UnsymmetricTangentEquations final : public SplitLcpEquations {
  public:
   /// @param s the factor of the stiffness the LCP is written on (K, or K condensed)
   UnsymmetricTangentEquations(const SplitLcp& lcp, const SpdSolver& s);
@@ -30,33 +29,16 @@ class UnsymmetricTangentEquations final : public ActiveSetEquations {
   UnsymmetricTangentEquations(const UnsymmetricTangentEquations&) = delete;
   UnsymmetricTangentEquations& operator=(const UnsymmetricTangentEquations&) = delete;
 
-  [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }
-  [[nodiscard]] const Eigen::VectorXd& q() const override { return lcp_.q; }
-  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override {
-    return lcp_.group[static_cast<std::size_t>(row)];
-  }
-  [[nodiscard]] int group_rank(Eigen::Index row) const override {
-    return lcp_.group_rank[static_cast<std::size_t>(row)];
-  }
   using ActiveSetEquations::solve;
   [[nodiscard]] Solution solve(const std::vector<Eigen::Index>& active, const Damping& damping,
                                Check check) override;
-  [[nodiscard]] LcpResult result(LcpStatus status, Eigen::VectorXd z, int steps) override;
 
   /// Numeric factorizations of the tangent so far.
   [[nodiscard]] int factorizations() const override { return factorizations_; }
 
  private:
   struct Lu;
-  /// w = q + N z - C x and its scale |q| + |N| |z| + |C| |x|.
-  void residual(const Eigen::VectorXd& z, const Eigen::VectorXd& x, Eigen::VectorXd& w,
-                Eigen::VectorXd& scale) const;
-
-  const SplitLcp& lcp_;
-  const SpdSolver& s_;
-  CholmodMatrix s_full_;        // S, both triangles
-  CholmodMatrix c_transposed_;  // n x m: the rows of C as columns
-  CholmodMatrix n_transposed_;  // m x m: the rows of N as columns
+  CholmodMatrix s_full_;  // S, both triangles
   std::unique_ptr<Lu> lu_;
   int factorizations_ = 0;
 };
