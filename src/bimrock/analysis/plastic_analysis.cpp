@@ -1098,10 +1098,17 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       if (!proven) {
         // Neither carried nor proven to fail: near a limit load the LCP is nearly singular.
         // Stop here, honestly, with every carried increment kept; not a collapse.
+        // What the user can do: displacement control passes a limit point that load control
+        // cannot prove.
+        const std::string what_to_try =
+            stage.control ? "; try more increments in this stage"
+                          : "; to pass a limit load, prescribe a monitor's displacement in this "
+                            "stage instead (stages[].control, docs/case-file.md)";
         result.stopped = Stop{st, carried,
                               "the increment after stage factor " + std::to_string(carried) +
                                   " could not be solved accurately, nor shown to have no "
-                                  "solution (the structure is close to a limit load)"};
+                                  "solution (the structure is close to a limit load)" +
+                                  what_to_try};
         return with_solver_work(std::move(result), k, solvers);
       }
       result.collapse = describe_collapse(st, carried, *proven, &failure, last ? &*last : nullptr);
