@@ -75,6 +75,9 @@ int main(int argc, char** argv) {
   bimrock::ensure_openmp_environment(argv);
   CLI::App app{"bimrock: block-interfaces model of jointed rock masses (SI units)"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("bimrock ") + BIMROCK_VERSION);
+  // The subcommands pass the options they do not know to the command: -q anywhere.
+  app.fallthrough();
   bool quiet = false;
   app.add_flag("-q,--quiet", quiet, "print nothing but errors");
 
@@ -116,7 +119,12 @@ int main(int argc, char** argv) {
   bench_cmd->add_option("--plot", bench.plot,
                         "write bench_time and bench_memory plots (PNG, SVG) to this folder");
 
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version end here with 0; a command line that cannot be read is bad input.
+    return app.exit(e) == 0 ? kOk : kInputError;
+  }
   try {
     if (*run_cmd)
       return run(case_file, output, quiet);

@@ -100,6 +100,7 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                  const std::vector<std::string>& files) {
   json j;
   j["program"] = "bimrock";
+  j["bimrock_version"] = BIMROCK_VERSION;
   j["case"] = model.source_file;
   j["title"] = model.title;
   j["units"] = "SI: m, N, Pa; tension positive";
