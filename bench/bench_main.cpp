@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   // rises to the largest block freed, up to 32 MiB: with it, a kernel repeated on a 10^4-block
   // model (K's arrays ~20 MB) reused warm pages while one on 10^5 blocks (~200 MB) faulted fresh
   // ones in at every iteration, and the exponents from 10^4 to 10^5 mixed the two (assembly
-  // 1.18 with it, 1.01 without: docs/performance.md, session 14). Now every size pays for fresh
+  // 1.18 with it, 1.01 without). Now every size pays for fresh
   // pages, as one analysis does.
   mallopt(M_MMAP_THRESHOLD, 128 * 1024);
   benchmark::Initialize(&argc, argv);

@@ -105,7 +105,7 @@ void solve_with(benchmark::State& state, const SpdSolver& solver, Eigen::Index c
   state.counters["solver_nnz"] = static_cast<double>(solver.factor_nonzeros());
 }
 
-// What the analysis does since session 17: forward and back through L_PP, K's factor's trailing
+// What the analysis does: forward and back through L_PP, K's factor's trailing
 // block (L_PP L_PP^T = S).
 void BM_SolveSchurTrailing(benchmark::State& state, Eigen::Index columns) {
   ZoneCase c(state, true);

@@ -1,5 +1,5 @@
 // The yield rows of an increment (eqs. 22-28). Sources: for associated flow the LCP matrix
-// N - C K^-1 Phi is symmetric (DESIGN.md section 3, a consequence of the weighting); C is the
+// N - C K^-1 Phi is symmetric (docs/formulation.md, a consequence of the weighting); C is the
 // derivative of the (weighted) yield functions with respect to the unknowns (checked by finite
 // differences); Phi lambda is the load that a plastic strain lambda g releases (checked against
 // the change of the internal force).

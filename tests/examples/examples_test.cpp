@@ -212,7 +212,7 @@ TEST(RockSlopeExample, TheCutConservesAreaAndTheCaseSolves) {
 // layer strains by p / M with the constrained modulus M = E (1 - nu) / ((1 + nu) (1 - 2 nu))
 // of plane strain, so the surface settles by p (h_soil / M_soil + h_rock / M_rock) and the rock
 // head by p h_rock / M_rock. The continuum (penalty) interfaces between the cells add a
-// compliance of order 1/p = 1e-7 (DESIGN.md section 2): tolerance 1e-6 relative.
+// compliance of order 1/p = 1e-7 (docs/formulation.md): tolerance 1e-6 relative.
 TEST(GmshLayeredGroundExample, SettlementMatchesOneDimensionalCompression) {
   const std::filesystem::path out = run_example("gmsh_layered_ground/case.yaml");
   const nlohmann::json s = testing::read_json(out / "summary.json");

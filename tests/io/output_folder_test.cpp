@@ -1,4 +1,4 @@
-// The results folder is written all or nothing (DESIGN.md section 4).
+// The results folder is written all or nothing (docs/results.md).
 #include <fstream>
 
 #include <gtest/gtest.h>

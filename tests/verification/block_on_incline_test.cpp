@@ -9,7 +9,7 @@
 //  - horizontal force to push it up: H = W tan(theta + phi), to pull it down: H = W tan(phi -
 //  theta);
 //  - a block of width b and height h topples when tan theta > b / h (resultant beyond the toe),
-//    1 m x 2.5 m: atan(1 / 2.5) = 21.80 deg (DESIGN.md section 3: end-point yield checks);
+//    1 m x 2.5 m: atan(1 / 2.5) = 21.80 deg (docs/formulation.md: end-point yield checks);
 //  - the 3DEC verification set "block on an inclined plane" (b = 10 m, rho = 2000 kg/m^3,
 //    g = 10 m/s^2, k_n = k_s = 10 MPa/m, slope 40 deg): h = 10 m, phi = 40.1 deg stays;
 //    h = 5 m, phi = 20 deg slides; h = 25 m, phi = 40 deg topples.

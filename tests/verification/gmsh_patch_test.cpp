@@ -9,7 +9,7 @@
 // (s_x, s_y, 0) everywhere) and Hooke's law in plane strain:
 //   eps_x = ((1 - nu^2) s_x - nu (1 + nu) s_y) / E,  eps_y = ((1 - nu^2) s_y - nu (1 + nu) s_x) /
 //   E.
-// The penalty interfaces add a compliance of order 1/p (DESIGN.md section 2): with the default
+// The penalty interfaces add a compliance of order 1/p (docs/formulation.md): with the default
 // p = 1e7 the error is below 1e-6, the tolerance of tests/verification/patch_test.cpp.
 #include <cmath>
 #include <string>

@@ -7,7 +7,7 @@
 // (s_x, s_y, 0) everywhere) and Hooke's law in plane strain:
 //   eps_x = ((1 - nu^2) s_x - nu (1 + nu) s_y) / E,  eps_y = ((1 - nu^2) s_y - nu (1 + nu) s_x) /
 //   E.
-// The penalty interfaces add a compliance of order 1/p (DESIGN.md section 2), so the error
+// The penalty interfaces add a compliance of order 1/p (docs/formulation.md), so the error
 // must fall like 1/p until round-off.
 #include <cmath>
 #include <cstdio>

@@ -132,7 +132,7 @@ CaseSpec footing_case(const Footing& f) {
     tresca_like.tensile = Softening::constant(1000.0 * kCohesion);
     joint.strength = tresca_like;
     joint.penalty_factor = f.joint_penalty;
-    joint.integration = Integration::lobatto;  // yield at the end points (DESIGN.md section 3)
+    joint.integration = Integration::lobatto;  // yield at the end points (docs/formulation.md)
   }
   c.joint_materials = {joint};
   c.blocks = testing::blocks_of(testing::crossed_triangles(nx, ny, h, Vec2(0.0, -d)));

@@ -54,7 +54,7 @@ CondensedStiffness::CondensedStiffness(const CondensedStiffness& base, const Spa
   lower_ = &own_lower_;
   if (solvable) {
     // The trailing block of base's factor is a factor of S: no factorization of its own (one
-    // was 20 MB and 0.01-0.05 s per zone at 10^4 blocks; docs/performance.md, session 17).
+    // was 20 MB and 0.01-0.05 s per zone at 10^4 blocks).
     schur_solver_ = std::make_unique<SchurSolver>(factor, level);
     factor_ = schur_solver_.get();
   }

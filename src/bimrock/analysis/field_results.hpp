@@ -47,7 +47,7 @@ InterfaceState interface_state(const Model& model, int interface, const Eigen::V
 Vec2 displacement_at(const Model& model, int block, const Vec2& p, const Eigen::VectorXd& u);
 
 /// Mean strain [eps_x, eps_y, gamma_xy] of the whole mass, from its boundary displacements:
-/// (1/A) closed integral sym(u (x) n) ds over the outline (DESIGN.md section 4), 2-point Gauss
+/// (1/A) closed integral sym(u (x) n) ds over the outline (docs/results.md), 2-point Gauss
 /// (exact for the linear u along each edge). Equals the area-weighted block strains plus the
 /// joint openings.
 Eigen::Vector3d mean_strain(const Model& model, const Eigen::VectorXd& u);

@@ -51,9 +51,9 @@ constexpr double kAimAtBound = 0.9;
 /// condensed onto first (at least PlasticOptions::least_zone_blocks). Each new zone costs a
 /// factorization of K in a new order (~0.45 s at 10^4 blocks), a larger zone costs more in
 /// every active-set iteration: measured on the plastic model of `bimrock bench`
-/// (docs/performance.md, session 12). K's order also holds PlasticOptions::zone_reserves
+/// (docs/performance.md). K's order also holds PlasticOptions::zone_reserves
 /// reserve zones, each kReserveGrowth times the one inside it: a zone outgrown is replaced by
-/// the smallest reserve that holds what is needed, read from the same factor (session 13:
+/// the smallest reserve that holds what is needed, read from the same factor (measured:
 /// 5% less time at 10^5 blocks, 2% at 10^4; more reserves or finer ones made K's factor
 /// larger for no gain).
 constexpr double kZoneGrowth = 1.5;
@@ -261,7 +261,7 @@ struct LcpSolvers {
   void emplace_solvers() {
     // The columns kept may take 12 bytes per entry of S's factor, 1.5 times its values: they
     // set the peak of the dense route's increments (a third of it cost 2.5x the columns' time
-    // at 10^4 blocks for 10% less peak; docs/performance.md, sessions 10 and 11).
+    // at 10^4 blocks for 10% less peak).
     const SpdSolver& s = condensed->factor();
     columns.emplace(s, std::max<std::int64_t>(64 << 20, 12 * s.factor_nonzeros()));
     tangent.emplace();
@@ -720,7 +720,7 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
           // A round that stalls on the points around the flow, twice as long, goes on without
           // them: past a collapse the larger LCP can leave projected Newton lowering its
           // objective without end, where the smaller one's rounds find the mechanism's
-          // certificate (docs/performance.md, session 17).
+          // certificate.
           return !outside.empty() || (around && ++stalled > opt.interrupt_after);
         };
         r = solvers.active_set.solve(*equations, warm_start, &interrupt);
@@ -1044,7 +1044,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       // numerically (close to the collapse, where the LCP is nearly singular, or a large step
       // whose active set the solvers did not find) proves nothing: it is cut, and once a part
       // of it has carried the rest of the increment is tried again from the new state
-      // (DESIGN.md section 3).
+      // (docs/formulation.md).
       double carried = result.state.stage_factor;
       double remaining = rest;       // of this increment, in the units of `step`
       double failing_step = rest;    // from the state: proven to fail, or the last that failed

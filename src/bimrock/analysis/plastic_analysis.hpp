@@ -35,7 +35,7 @@ struct PlasticOptions {
   /// Where the last increment's LCP ran on the reduced tangent, every point within this many
   /// rings of neighbours of the plastic flow's blocks (the last increment's active rows and
   /// the step's required points) is a candidate too: there a row that stays inactive costs only
-  /// its share of w, and the flow spreads to the next blocks (10^4 blocks, session 17: rounds
+  /// its share of w, and the flow spreads to the next blocks (10^4 blocks: rounds
   /// 52 -> 32 and the whole analysis 6-7% faster with 2; 0: none).
   int near_rings = 2;
   /// The most iterations of the active-set method on one LCP: of the block rule, and again as
@@ -61,7 +61,7 @@ struct PlasticOptions {
   /// lacks the mechanism's points can take projected Newton many damped steps, where the
   /// round that holds them proves the collapse at once (10^4 blocks: the step past the collapse
   /// 1.2 -> 0.8 s, the whole analysis 6.65 -> 6.29 s, medians of 3). 3 since the candidates
-  /// around the flow (session 17, 10^4 blocks: 4.0-4.2 s against 4.4-4.5 s with 8, 4.3-4.4 s
+  /// around the flow (10^4 blocks: 4.0-4.2 s against 4.4-4.5 s with 8, 4.3-4.4 s
   /// with 2, 20 s with 1; 10^5 blocks about the same; 979 blocks 0.82 s against 0.71 s).
   int interrupt_after = 3;
   /// The LCPs are solved on K condensed statically onto a zone of blocks that holds every
@@ -86,7 +86,7 @@ struct PlasticOptions {
   /// A region has at most this fraction of the model's blocks: a larger one costs a good part
   /// of K's factorization at each zone condensed from it, and its factor adds to the peak
   /// memory (at 10^4 blocks, regions of a third of the model saved no time and took the memory
-  /// from 1.66 to 1.96 times the limit's: docs/performance.md, session 14).
+  /// from 1.66 to 1.96 times the limit's).
   double region_fraction = 0.25;
   /// Record each phase's peak resident memory in the timings (benchmarks).
   bool track_memory = false;

@@ -1,6 +1,6 @@
 #pragma once
 /// @file Is every block held? A structure that is not fully supported is reported by naming the
-/// blocks that can move freely, never solved (DESIGN.md section 2).
+/// blocks that can move freely, never solved (docs/formulation.md).
 #include <bimrock/model/model.hpp>
 
 namespace bimrock {

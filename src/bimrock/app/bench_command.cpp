@@ -124,7 +124,7 @@ Run run_elastic(int n, const fs::path& scratch) {
 
 // The plastic zone: the blocks of every point that has yielded or opened so far, and how many
 // of them border a block outside it (what a static condensation onto the zone would leave
-// dense; docs/performance.md, session 11).
+// dense).
 std::pair<int, int> plastic_zone(const Model& model, const std::vector<YieldPoint>& points,
                                  const AnalysisState& st) {
   std::vector<char> in(static_cast<std::size_t>(model.n_blocks()), 0);

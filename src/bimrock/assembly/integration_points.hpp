@@ -1,5 +1,5 @@
 #pragma once
-/// @file Integration points along an interface segment for the chosen rule (DESIGN.md section 3).
+/// @file Integration points along an interface segment for the chosen rule (docs/formulation.md).
 #include <array>
 
 #include <bimrock/geometry/segment.hpp>

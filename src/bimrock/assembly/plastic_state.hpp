@@ -1,5 +1,5 @@
 #pragma once
-/// @file The plastic state of one yield point, kept apart from the laws (STYLE.md practice 3).
+/// @file The plastic state of one yield point, kept apart from the laws.
 #include <Eigen/Core>
 
 namespace bimrock {

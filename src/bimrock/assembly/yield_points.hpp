@@ -1,5 +1,5 @@
 #pragma once
-/// @file Where yield is checked (DESIGN.md section 3): the integration points of every interface
+/// @file Where yield is checked (docs/formulation.md): the integration points of every interface
 /// whose joint has a strength law (end points for lobatto joints, so that blocks pivot about
 /// their corners and topple exactly), and every block with a strength law (on its mean stress).
 /// The shared end points of neighbouring pieces of one subdivided joint are merged.

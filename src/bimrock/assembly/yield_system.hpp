@@ -2,7 +2,7 @@
 /// @file The yield rows of one increment for the candidate yield points (eqs. 22-28):
 ///   K dU = q + Phi lambda,   nu = -f0 - C dU + N lambda >= 0,  lambda >= 0,  lambda . nu = 0.
 /// Row r of a point with weight w is scaled by w, so that for associated flow C = Phi^T and N is
-/// symmetric, and the LCP matrix N - C K^-1 Phi is symmetric (DESIGN.md section 3).
+/// symmetric, and the LCP matrix N - C K^-1 Phi is symmetric (docs/formulation.md).
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -12,7 +12,7 @@
 
 namespace bimrock {
 
-/// Which yield point and mode a row stands for (STYLE.md practice 7).
+/// Which yield point and mode a row stands for.
 struct YieldRow {
   int point = 0;
   int mode = 0;

@@ -385,7 +385,7 @@ double non_negative(const Value& v) {
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 /// Mohr-Coulomb or Tresca on the block's mean stress: cohesion [Pa], friction and dilation
-/// [deg], planes of the linearized criterion (DESIGN.md section 3).
+/// [deg], planes of the linearized criterion (docs/formulation.md).
 BlockStrength read_block_strength(const Value& v) {
   const Map m = open(v, "materials.<name>.strength");
   BlockStrength s;
@@ -427,7 +427,7 @@ Softening softening(const Map& m, const char* peak_key, const char* residual_key
   return s;
 }
 
-/// Mohr-Coulomb with tension cut-off of a joint (DESIGN.md section 3): cohesion [Pa], friction
+/// Mohr-Coulomb with tension cut-off of a joint (docs/formulation.md): cohesion [Pa], friction
 /// and dilation [deg], tensile strength [Pa], with optional linear softening.
 std::optional<JointStrength> read_joint_strength(const Map& m) {
   const bool any = m.has("cohesion") || m.has("friction") || m.has("tensile_strength") ||
@@ -509,7 +509,7 @@ JointMaterial read_joint_material(const Entry& e, const AnalysisSettings& settin
     j.penalty_factor = p ? positive(*p) : settings.penalty_factor;
   }
 
-  // End-point springs let blocks topple (DESIGN.md section 3); a continuum never opens, so it
+  // End-point springs let blocks topple (docs/formulation.md); a continuum never opens, so it
   // takes the exact elastic stiffness of 2-point Gauss.
   j.integration = continuum ? Integration::gauss : Integration::lobatto;
   if (const auto rule = m.find("integration")) {

@@ -1,6 +1,6 @@
 #pragma once
 /// @file All-or-nothing results: files are written into a hidden sibling of the results folder
-/// and renamed into place only when complete (DESIGN.md section 4), so a failed or interrupted
+/// and renamed into place only when complete (docs/results.md), so a failed or interrupted
 /// run never leaves partial or mixed results where a user looks for them.
 #include <filesystem>
 

@@ -1,5 +1,5 @@
 #pragma once
-/// @file The results folder of a run (DESIGN.md section 4), written all or nothing: summary.json,
+/// @file The results folder of a run (docs/results.md), written all or nothing: summary.json,
 /// blocks.csv, interfaces.csv, vtk/step_NNNN.vtu + results.pvd, and for a nonlinear run
 /// history.csv, the load-displacement plots and pictures of the final state and the mechanism,
 /// and on collapse mechanism.csv (with the mechanism's velocities in the last VTU step).

@@ -25,7 +25,7 @@ struct BlockMaterial {
 /// Elasticity matrix D_b of eq. 2 for [eps_x, eps_y, gamma_xy] (engineering shear strain).
 Eigen::Matrix3d elasticity_matrix(const BlockMaterial& m, PlaneMode plane);
 
-/// How the springs of an interface are integrated along its segment (DESIGN.md section 3).
+/// How the springs of an interface are integrated along its segment (docs/formulation.md).
 enum class Integration {
   lobatto,  ///< end points (trapezoid rule): the default for joints; lets blocks topple exactly
   gauss,    ///< 2-point Gauss: exact elastic stiffness, for continuum interfaces that never open

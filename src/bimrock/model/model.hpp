@@ -27,7 +27,7 @@ struct Interface {
   int block_i = 0;
   int block_j = kGround;
   Segment segment;
-  Vec2 normal;  ///< unit, from i into j; delta_n > 0 is opening (DESIGN.md section 2)
+  Vec2 normal;  ///< unit, from i into j; delta_n > 0 is opening (docs/formulation.md)
   double normal_stiffness = 0.0;  ///< k_n [Pa/m]
   double shear_stiffness = 0.0;   ///< k_s [Pa/m]
   Integration integration = Integration::lobatto;

@@ -113,8 +113,8 @@ constexpr double kPressurePerShear = 0.5;  // the thrust's normal over its shear
 double abutment_collapse_shear() {
   // The top row from the strip's inner end to the cliff slides on its bed joint and tears off
   // its vertical joint at the strip's inner end (tension), pushed by tau B and held down by its
-  // weight and the pressure (DESIGN.md: the joint law): tau B = c L + sigma_t h + (gamma h L +
-  // kPressurePerShear tau B) tan(phi).
+  // weight and the pressure (docs/formulation.md: the joint law): tau B = c L + sigma_t h + (gamma
+  // h L + kPressurePerShear tau B) tan(phi).
   const double b = kAbutmentWidth, l = kAbutmentWidth + kAbutmentSetback, h = kBrickHeight;
   const double t = std::tan(kAbutmentFriction);
   return (kAbutmentCohesion * l + kAbutmentTension * h + 26e3 * h * l * t) /

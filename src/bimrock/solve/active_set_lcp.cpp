@@ -243,7 +243,7 @@ constexpr double kSmallestDamping = 1e-6;
 // damped: the solution may need it in place of one of them, which the limited steps cannot
 // reach (on random grouped problems they stalled so). Damping the surplus rows of every group
 // instead cut the steps to 1/8 near a collapse: 10^4 blocks 57 -> 52 tangent factorizations,
-// 979 blocks 53 -> 38 (docs/performance.md, session 18).
+// 979 blocks 53 -> 38.
 void keep_free_rows_within_group_rank(const ActiveSetEquations& problem, const Eigen::VectorXd& z,
                                       const Eigen::VectorXd& w, bool settled,
                                       std::vector<Eigen::Index>& rows) {

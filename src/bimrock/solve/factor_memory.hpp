@@ -6,7 +6,7 @@
 /// pages mapped and serves the next request of about its size (mremap resizes or moves a
 /// mapping without touching the pages it keeps). At 10^4 blocks the condensations took 1.41 s
 /// before, 1.27 s after (medians of 4 runs in turn with the last commit's build; the whole
-/// analysis 4.39 -> 4.22 s, the peak the same: docs/performance.md, session 18).
+/// analysis 4.39 -> 4.22 s, the peak the same).
 ///
 /// Installed for the whole process (SuiteSparse's allocator is global) by the first
 /// SparseCholesky. At most kKeptFactorBlocks freed blocks are kept; release_kept_factor_memory()

@@ -1,8 +1,8 @@
 #pragma once
 /// @file The linear complementarity problem of one load increment, as plain data, and what every
-/// LCP solver shares: the result, the measured residuals and the solver interface (STYLE.md
-/// practices 6 and 8). Find z >= 0 with w = M z + q >= 0 and z . w = 0; in the analysis z is the
-/// vector of plastic multipliers lambda, w the slacks nu and M = N - C K^-1 Phi (eqs. 24, 28).
+/// LCP solver shares: the result, the measured residuals and the solver interface. Find z >= 0 with
+/// w = M z + q >= 0 and z . w = 0; in the analysis z is the vector of plastic multipliers lambda, w
+/// the slacks nu and M = N - C K^-1 Phi (eqs. 24, 28).
 #include <iosfwd>
 #include <string>
 
@@ -102,7 +102,7 @@ class LcpSolver {
 };
 
 /// Writes the problem as text with every digit needed to read back the same doubles, so the LCP
-/// of a failing increment can be replayed in a test (STYLE.md practice 8).
+/// of a failing increment can be replayed in a test.
 void write_lcp(std::ostream& out, const LcpProblem& problem);
 /// Reads what write_lcp wrote; throws std::runtime_error on a malformed stream.
 [[nodiscard]] LcpProblem read_lcp(std::istream& in);

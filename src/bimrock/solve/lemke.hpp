@@ -14,7 +14,7 @@
 /// ratio test unique and so rules out cycling on degenerate problems (zero entries of q, equal
 /// rows of M). When z0 ties for leaving it leaves: the method ends at once.
 ///
-/// Robustness (DESIGN.md section 3): M = N - C K^-1 Phi is formed by cancellation and is singular
+/// Robustness (docs/formulation.md): M = N - C K^-1 Phi is formed by cancellation and is singular
 /// at a mechanism. So (1) entries below zero_tolerance * max|M_ij| are taken as round-off zeros,
 /// (2) rows and columns are equilibrated by powers of two (exact) before pivoting, (3) an entry
 /// of the entering column counts as a pivot only if it stands out from the round-off of its own
