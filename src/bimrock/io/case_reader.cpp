@@ -138,6 +138,7 @@ constexpr std::array kKeys = {
     CaseKey{"monitors[]", "name", true},
     CaseKey{"monitors[]", "at", true},
     CaseKey{"output", "vtk"},
+    CaseKey{"output", "vtk_every"},
     CaseKey{"output", "csv"},
     CaseKey{"stages[]", "name", true},
     CaseKey{"stages[]", "increments"},
@@ -951,6 +952,11 @@ OutputOptions read_output(const Value& v) {
   const Map m = open(v, "output");
   OutputOptions o;
   o.vtk = m.boolean_or("vtk", o.vtk);
+  if (const auto every = m.find("vtk_every")) {
+    o.vtk_every = every->integer();
+    if (o.vtk_every < 1)
+      every->fail("must be at least 1");
+  }
   o.csv = m.boolean_or("csv", o.csv);
   return o;
 }

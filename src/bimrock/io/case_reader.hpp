@@ -11,8 +11,9 @@ namespace bimrock {
 
 /// What to write besides summary.json.
 struct OutputOptions {
-  bool vtk = true;  ///< vtk/step_NNNN.vtu + results.pvd
-  bool csv = true;  ///< blocks.csv, interfaces.csv
+  bool vtk = true;    ///< vtk/step_NNNN.vtu + results.pvd
+  int vtk_every = 1;  ///< nonlinear: a step every this many carried increments (and the last)
+  bool csv = true;    ///< blocks.csv, interfaces.csv
 };
 
 struct Case {

@@ -1,6 +1,7 @@
 #include <bimrock/io/results_writer.hpp>
 
 #include <fmt/core.h>
+#include <cmath>
 
 #include <bimrock/model/limits.hpp>
 
@@ -64,7 +65,7 @@ double estimate_output_bytes(const Model& model, const OutputOptions& options) {
   double increments = 0.0;
   for (const Stage& s : model.stages)
     increments += s.increments;
-  const double steps = model.stages.empty() ? 1.0 : increments + 1.0;
+  const double steps = model.stages.empty() ? 1.0 : std::ceil(increments / options.vtk_every) + 2.0;
   // The tables of the final state and the history: a few hundred bytes per row.
   const double tables = options.csv ? 200.0 * cells : 0.0;
   const double history = 200.0 * (1.0 + static_cast<double>(model.monitors.size())) * steps;
@@ -84,7 +85,8 @@ void check_output_size(const Model& model, const Case& c) {
   const auto line = limits.lines.find("limits.output_mb");
   throw InputError(c.spec.file, line == limits.lines.end() ? 0 : line->second, "output",
                    limit_message(mb, limits.output_mb, "output_mb", "MB of results",
-                                 c.output.vtk ? "give fewer increments or set output.vtk: false"
+                                 c.output.vtk ? "give fewer increments, set output.vtk_every to "
+                                                "write fewer steps, or set output.vtk: false"
                                               : "give fewer increments"));
 }
 
@@ -131,15 +133,28 @@ ElasticSolution PlasticResultsWriter::fields_of(const AnalysisState& state) cons
 
 void PlasticResultsWriter::on_increment(const IncrementRecord& /*record*/,
                                         const AnalysisState& state) {
+  ++carried_;
   if (!options_.vtk)
     return;
+  if (carried_ % options_.vtk_every != 0) {
+    unwritten_ = state;  // written in finish() if it is the last
+    return;
+  }
+  unwritten_.reset();
   const std::size_t step = steps_.size();
   write_vtu(model_, fields_of(state), {&index_, &state.points}, folder_.path() / step_file(step));
-  steps_.push_back({static_cast<double>(step), step_file(step)});
+  steps_.push_back({static_cast<double>(carried_), step_file(step)});
 }
 
 ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
   const fs::path& dir = folder_.path();
+  if (unwritten_) {  // the last carried increment, which thinning skipped
+    const std::size_t step = steps_.size();
+    write_vtu(model_, fields_of(*unwritten_), {&index_, &unwritten_->points},
+              dir / step_file(step));
+    steps_.push_back({static_cast<double>(carried_), step_file(step)});
+    unwritten_.reset();
+  }
   ElasticSolution fields = fields_of(result.state);
   fields.timings = result.timings;
   std::vector<std::string> files;

@@ -5,6 +5,7 @@
 /// and on collapse mechanism.csv (with the mechanism's velocities in the last VTU step).
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,9 +32,11 @@ void check_output_size(const Model& model, const Case& c);
 void write_elastic_results(const Model& model, const ElasticSolution& solution,
                            const OutputOptions& options, const std::filesystem::path& out);
 
-/// Writes the results of a nonlinear run as it goes: a VTK step per carried increment (pass
-/// on_increment() to run_plastic_analysis), the rest in finish(). Nothing appears in `out`
-/// before finish() returns; if the writer is destroyed unfinished, nothing appears at all.
+/// Writes the results of a nonlinear run as it goes: a VTK step every OutputOptions::vtk_every
+/// carried increments, and the last one (pass on_increment() to run_plastic_analysis), the rest
+/// in finish(). A step's time in results.pvd is its carried increment's number (0: the start).
+/// Nothing appears in `out` before finish() returns; if the writer is destroyed unfinished, nothing
+/// appears at all.
 class PlasticResultsWriter {
  public:
   PlasticResultsWriter(const Model& model, OutputOptions options, const std::filesystem::path& out);
@@ -51,6 +54,9 @@ class PlasticResultsWriter {
   StagingFolder folder_;
   YieldPointIndex index_;
   std::vector<PvdEntry> steps_;
+  int carried_ = 0;  // increments carried so far
+  /// The last carried state, while it has no step of its own (vtk_every > 1).
+  std::optional<AnalysisState> unwritten_;
 };
 
 }  // namespace bimrock
