@@ -38,6 +38,22 @@ void write_history_csv(const Model& model, const PlasticResult& result,
   }
 }
 
+Vec2 plotted_direction(const Model& model, const Stage& stage) {
+  if (stage.control)
+    return stage.control->direction.normalized();
+  const double t = model.settings.thickness;
+  Vec2 total = Vec2::Zero();
+  for (const PointLoad& p : stage.loads.points)
+    total += p.force;
+  for (const Traction& tr : stage.loads.tractions) {
+    const Vec2 s(-tr.outward_normal.y(), tr.outward_normal.x());
+    total += t * tr.segment.length() * (tr.normal * tr.outward_normal + tr.shear * s);
+  }
+  for (const Block& b : model.blocks)
+    total += t * b.area * model.block_materials[b.material].unit_weight * stage.loads.gravity;
+  return total.norm() > 0.0 ? Vec2(total.normalized()) : Vec2(Vec2::UnitX());
+}
+
 void write_history_plots(const Model& model, const PlasticResult& result,
                          const std::filesystem::path& folder) {
   if (model.stages.empty() || model.monitors.empty())
@@ -45,17 +61,7 @@ void write_history_plots(const Model& model, const PlasticResult& result,
   const int last = static_cast<int>(model.stages.size()) - 1;
   const Stage& stage = model.stages[last];
   const double resultant = point_load_resultant(stage);
-  // The direction the curve is drawn along: the stage's point loads, else the controlled
-  // direction, else x.
-  Vec2 along = Vec2::UnitX();
-  if (resultant > 0.0) {
-    Vec2 sum = Vec2::Zero();
-    for (const PointLoad& p : stage.loads.points)
-      sum += p.force;
-    along = sum / resultant;
-  } else if (stage.control) {
-    along = stage.control->direction;
-  }
+  const Vec2 along = plotted_direction(model, stage);
   for (std::size_t m = 0; m < model.monitors.size(); ++m) {
     PlotSeries s{model.monitors[m].name, {0.0}, {0.0}};
     for (const IncrementRecord& r : result.history) {
@@ -73,7 +79,9 @@ void write_history_plots(const Model& model, const PlasticResult& result,
     }
     LinePlot plot{
         fmt::format("{}: stage '{}'", model.title.empty() ? "bimrock" : model.title, stage.name),
-        fmt::format("displacement of {} along the load [mm]", model.monitors[m].name),
+        fmt::format("displacement of {} along ({:.2f}, {:.2f}){} [mm]", model.monitors[m].name,
+                    along.x(), along.y(),
+                    stage.control ? ", the controlled direction" : ", the load"),
         resultant > 0.0 ? "point load [kN]" : "stage load factor [-]",
         {s}};
     write_line_plot(plot, folder / ("plot_" + model.monitors[m].name));

@@ -14,11 +14,16 @@ void write_history_csv(const Model& model, const PlasticResult& result,
                        const std::filesystem::path& file);
 
 /// plot_<monitor>.png/.svg: the load of the last stage against the monitor's displacement
-/// along that load (mm), one curve per monitor.
+/// along plotted_direction() (mm), one curve per monitor.
 void write_history_plots(const Model& model, const PlasticResult& result,
                          const std::filesystem::path& folder);
 
 /// Magnitude of the resultant of a stage's point loads [N] (0 when it has none).
 double point_load_resultant(const Stage& stage);
+
+/// The direction a stage's load-displacement curves are drawn along (and say so on their axis):
+/// the controlled direction, else the resultant of the stage's loads (point loads, tractions,
+/// weight), else x. Unit length.
+Vec2 plotted_direction(const Model& model, const Stage& stage);
 
 }  // namespace bimrock
