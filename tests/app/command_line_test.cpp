@@ -2,6 +2,7 @@
 // bad input (exit 2, as the README promises). Expected: the project's version as CMake defines
 // it, and the exit codes of the README.
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -62,6 +63,40 @@ TEST(CommandLine, ACommandLineThatCannotBeReadIsBadInput) {
     EXPECT_FALSE(r.err.empty()) << args;
     std::filesystem::remove_all(r.folder);
   }
+}
+
+TEST(CommandLine, ProgressSaysTheModelFirstThenStageAndStepOfTheirCounts) {
+  const std::string pull_out = testing::read_text(std::filesystem::path(BIMROCK_SOURCE_DIR) /
+                                                  "examples" / "pull_out" / "case.yaml");
+  const testing::CommandResult r = testing::run_bimrock("run", pull_out, "-o results");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The example: 14 blocks; stage 1 of 2 (gravity, 1 increment), stage 2 of 2 (pull, 30).
+  const std::size_t size = r.out.find("14 blocks");
+  const std::size_t first = r.out.find("stage 1/2");
+  ASSERT_NE(size, std::string::npos) << r.out;
+  ASSERT_NE(first, std::string::npos) << r.out;
+  EXPECT_LT(size, first);
+  EXPECT_NE(r.out.find("step   1 of 1:"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("stage 2/2"), std::string::npos);
+  EXPECT_NE(r.out.find("step  20 of 30:"), std::string::npos);
+  EXPECT_NE(r.out.find("s left"), std::string::npos);
+  std::filesystem::remove_all(r.folder);
+}
+
+TEST(CommandLine, DefaultOutputFoldersOfCasesNamedAlikeDoNotCollide) {
+  // Two cases both named case.yaml, in folders a/ and b/, and one in the working folder.
+  testing::CommandResult r = run_command("--version");
+  for (const char* sub : {"a", "b"}) {
+    std::filesystem::create_directories(r.folder / sub);
+    std::ofstream(r.folder / sub / "case.yaml") << kCase;
+  }
+  const std::string in = "cd '" + r.folder.string() + "' && '" + BIMROCK_BINARY + "' ";
+  for (const char* c : {"run a/case.yaml -q", "run b/case.yaml -q", "run case.yaml -q"})
+    ASSERT_EQ(std::system((in + c).c_str()), 0) << c;
+  EXPECT_TRUE(std::filesystem::exists(r.folder / "results" / "a" / "case" / "summary.json"));
+  EXPECT_TRUE(std::filesystem::exists(r.folder / "results" / "b" / "case" / "summary.json"));
+  EXPECT_TRUE(std::filesystem::exists(r.folder / "results" / "case" / "summary.json"));
+  std::filesystem::remove_all(r.folder);
 }
 
 }  // namespace

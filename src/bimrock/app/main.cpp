@@ -23,8 +23,13 @@ namespace {
 
 enum ExitCode { kOk = 0, kInputError = 2, kModelError = 3, kInternalError = 4, kStopped = 5 };
 
+// results/<folder of the case>/<case name>: the examples are all named case.yaml, and their
+// results must not overwrite each other. A case in the working folder: results/<case name>.
 std::filesystem::path default_output(const std::string& case_file) {
-  return std::filesystem::path("results") / std::filesystem::path(case_file).stem();
+  const std::filesystem::path path(case_file);
+  const std::filesystem::path folder = path.parent_path().filename();
+  const bool named = !folder.empty() && folder != "." && folder != "..";
+  return std::filesystem::path("results") / (named ? folder / path.stem() : path.stem());
 }
 
 int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
@@ -42,12 +47,16 @@ int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
       bimrock::print_summary(model, solution, out);
     return kOk;
   }
+  if (!quiet)
+    bimrock::print_model(model);  // the size first: the analysis may take a while
   bimrock::PlasticResultsWriter writer(model, c.output, out);
+  double elapsed = 0.0;
   const bimrock::PlasticResult result = bimrock::run_plastic_analysis(
       model, {}, [&](const bimrock::IncrementRecord& r, const bimrock::AnalysisState& s) {
         writer.on_increment(r, s);
+        elapsed += r.seconds;
         if (!quiet)
-          bimrock::print_increment(model, r);
+          bimrock::print_increment(model, r, elapsed);
       });
   const bimrock::ElasticSolution fields = writer.finish(result);
   if (!quiet)
@@ -85,7 +94,8 @@ int main(int argc, char** argv) {
   std::string output;
   CLI::App* run_cmd = app.add_subcommand("run", "solve a case and write its results");
   run_cmd->add_option("case", case_file, "case file (YAML)")->required();
-  run_cmd->add_option("-o,--output", output, "results folder (default results/<case name>)");
+  run_cmd->add_option("-o,--output", output,
+                      "results folder (default results/<folder of the case>/<case name>)");
 
   CLI::App* check_cmd = app.add_subcommand("check", "read and check a case without solving it");
   check_cmd->add_option("case", case_file, "case file (YAML)")->required();
@@ -93,7 +103,8 @@ int main(int argc, char** argv) {
   CLI::App* mesh_cmd = app.add_subcommand(
       "mesh", "build the blocks of a case and write them (VTK, picture) without solving");
   mesh_cmd->add_option("case", case_file, "case file (YAML)")->required();
-  mesh_cmd->add_option("-o,--output", output, "folder (default results/<case name>-mesh)");
+  mesh_cmd->add_option("-o,--output", output,
+                       "folder (default results/<folder of the case>/<case name>-mesh)");
 
   bimrock::BenchOptions bench;
   CLI::App* bench_cmd = app.add_subcommand(

@@ -1,5 +1,7 @@
 #include "bimrock/app/report.hpp"
 
+#include <algorithm>
+
 #include <fmt/core.h>
 
 namespace bimrock {
@@ -41,13 +43,26 @@ void print_summary(const Model& model, const ElasticSolution& s, const std::file
   fmt::print("results written to {}/\n", out.string());
 }
 
-void print_increment(const Model& model, const IncrementRecord& r) {
+void print_increment(const Model& model, const IncrementRecord& r, double elapsed) {
   const Stage& stage = model.stages[static_cast<std::size_t>(r.stage)];
+  // Progress in increments asked for: the stages before whole, this one by its factor (under
+  // displacement control the factor is the load's, so the step count stands in for it).
+  double total = 0.0;
+  double done = 0.0;
+  for (std::size_t k = 0; k < model.stages.size(); ++k) {
+    const double n = model.stages[k].increments;
+    total += n;
+    if (static_cast<int>(k) < r.stage)
+      done += n;
+  }
+  done += stage.control ? std::min<double>(r.increment, stage.increments)
+                        : std::clamp(r.stage_factor, 0.0, 1.0) * stage.increments;
+  const double left = done > 0.0 ? elapsed * (total - done) / done : 0.0;
   fmt::print(
-      "stage {:>12} step {:>3}: factor {:.6f}, yielding points {:>5}, open {:>5}, LCP {:>5} rows, "
-      "{:>5} pivots\n",
-      stage.name, r.increment, r.stage_factor, r.yielding_points, r.open_points, r.lcp_size,
-      r.pivots);
+      "stage {}/{} {:>12} step {:>3} of {}: factor {:.6f}, yielding points {:>5}, open {:>5}, "
+      "LCP {:>5} rows; {:.1f} s, about {:.0f} s left\n",
+      r.stage + 1, model.stages.size(), stage.name, r.increment, stage.increments, r.stage_factor,
+      r.yielding_points, r.open_points, r.lcp_size, elapsed, left);
 }
 
 void print_plastic_summary(const Model& model, const PlasticResult& result,

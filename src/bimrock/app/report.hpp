@@ -12,7 +12,10 @@ void print_summary(const Model& model, const ElasticSolution& solution,
                    const std::filesystem::path& out);
 
 /// One line per carried increment of a nonlinear analysis.
-void print_increment(const Model& model, const IncrementRecord& record);
+/// One progress line per carried increment: stage k of n, step and the steps asked for, the
+/// state, the time since the analysis started and a rough estimate of the time left (in
+/// proportion to the increments still to go; near a collapse they take longer).
+void print_increment(const Model& model, const IncrementRecord& record, double elapsed);
 void print_plastic_summary(const Model& model, const PlasticResult& result,
                            const ElasticSolution& fields, const std::filesystem::path& out);
 
