@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <cairo-svg.h>
@@ -14,13 +15,22 @@ namespace {
 
 constexpr double kMargin = 30.0;
 constexpr double kTitle = 30.0;
+constexpr double kFooter = 28.0;  // the scale bar, the magnification and the materials' legend
+
+/// Fill colours of the block materials, in the order of the case file (then again).
+constexpr double kMaterialColours[][3] = {
+    {0.90, 0.85, 0.76}, {0.72, 0.82, 0.90}, {0.80, 0.90, 0.74}, {0.95, 0.78, 0.70},
+    {0.85, 0.78, 0.92}, {0.93, 0.90, 0.65}, {0.75, 0.88, 0.86}, {0.88, 0.80, 0.80}};
+constexpr std::size_t kColours = sizeof(kMaterialColours) / sizeof(kMaterialColours[0]);
 
 struct Frame {
   BBox box;
   double scale = 1.0;
   double height = 0.0;
   [[nodiscard]] double x(double wx) const { return kMargin + (wx - box.lo.x()) * scale; }
-  [[nodiscard]] double y(double wy) const { return height - kMargin - (wy - box.lo.y()) * scale; }
+  [[nodiscard]] double y(double wy) const {
+    return height - kMargin - kFooter - (wy - box.lo.y()) * scale;
+  }
 };
 
 Vec2 moved(const Model& m, int block, const Vec2& p, const Eigen::VectorXd& u, double magnify) {
@@ -45,16 +55,8 @@ void polygon_path(cairo_t* cr, const Frame& f, const Model& m, int block, const 
 void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, double width) {
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
-  double magnify = 0.0;
-  if (pic.u.size() > 0) {
-    double largest = 0.0;
-    for (int b = 0; b < m.n_blocks(); ++b)
-      for (const Vec2& v : m.blocks[b].polygon.vertices)
-        largest =
-            std::max(largest, (block_Q(m.blocks[b].centroid, v) * pic.u.segment<6>(6 * b)).norm());
-    if (largest > 0.0)
-      magnify = pic.displayed_fraction * f.box.diagonal() / largest;
-  }
+  const double magnify =
+      displacement_magnification(m, pic.u, pic.displayed_fraction, f.box.diagonal());
   const Eigen::VectorXd none;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   if (magnify > 0.0) {
@@ -67,7 +69,9 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
   }
   for (int b = 0; b < m.n_blocks(); ++b) {
     polygon_path(cr, f, m, b, pic.u, magnify);
-    cairo_set_source_rgb(cr, 0.90, 0.85, 0.76);  // rock
+    const double* fill =
+        kMaterialColours[static_cast<std::size_t>(m.blocks[b].material) % kColours];
+    cairo_set_source_rgb(cr, fill[0], fill[1], fill[2]);
     cairo_fill_preserve(cr);
     cairo_set_source_rgb(cr, 0.35, 0.3, 0.25);
     cairo_set_line_width(cr, 0.6);
@@ -123,9 +127,69 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
     cairo_move_to(cr, width - kMargin - e.width, kTitle - 8);
     cairo_show_text(cr, legend);
   }
+  // The footer: a scale bar, the magnification, and the materials where there are several.
+  cairo_set_font_size(cr, 12);
+  const double base = f.height - 10.0;
+  const double bar = scale_bar_length((f.box.hi - f.box.lo).x());
+  cairo_set_line_width(cr, 2.0);
+  cairo_move_to(cr, kMargin, base - 4);
+  cairo_line_to(cr, kMargin + bar * f.scale, base - 4);
+  cairo_stroke(cr);
+  char text[64];
+  std::snprintf(text, sizeof text, "%g m", bar);
+  cairo_move_to(cr, kMargin + bar * f.scale + 8, base);
+  cairo_show_text(cr, text);
+  double x = kMargin + bar * f.scale + 80;
+  if (magnify > 0.0) {
+    std::snprintf(text, sizeof text, "displacements x %.3g", magnify);
+    cairo_move_to(cr, x, base);
+    cairo_show_text(cr, text);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, text, &e);
+    x += e.x_advance + 30;
+  }
+  if (m.block_materials.size() > 1)
+    for (std::size_t k = 0; k < m.block_materials.size(); ++k) {
+      const double* fill = kMaterialColours[k % kColours];
+      cairo_rectangle(cr, x, base - 11, 12, 12);
+      cairo_set_source_rgb(cr, fill[0], fill[1], fill[2]);
+      cairo_fill_preserve(cr);
+      cairo_set_source_rgb(cr, 0.35, 0.3, 0.25);
+      cairo_set_line_width(cr, 0.6);
+      cairo_stroke(cr);
+      cairo_set_source_rgb(cr, 0, 0, 0);
+      cairo_move_to(cr, x + 16, base);
+      cairo_show_text(cr, m.block_materials[k].name.c_str());
+      cairo_text_extents_t e;
+      cairo_text_extents(cr, m.block_materials[k].name.c_str(), &e);
+      x += 16 + e.x_advance + 20;
+    }
 }
 
 }  // namespace
+
+double scale_bar_length(double width) {
+  if (!(width > 0.0))
+    return 1.0;
+  const double most = width / 5.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(most)));
+  for (const double f : {5.0, 2.0, 1.0})
+    if (f * decade <= most * (1.0 + 1e-12))
+      return f * decade;
+  return decade;
+}
+
+double displacement_magnification(const Model& model, const Eigen::VectorXd& u, double fraction,
+                                  double size) {
+  if (u.size() == 0)
+    return 0.0;
+  double largest = 0.0;
+  for (int b = 0; b < model.n_blocks(); ++b)
+    for (const Vec2& v : model.blocks[b].polygon.vertices)
+      largest =
+          std::max(largest, (block_Q(model.blocks[b].centroid, v) * u.segment<6>(6 * b)).norm());
+  return largest > 0.0 ? fraction * size / largest : 0.0;
+}
 
 void write_block_picture(const Model& model, const BlockPicture& pic,
                          const std::filesystem::path& stem) {
@@ -138,7 +202,7 @@ void write_block_picture(const Model& model, const BlockPicture& pic,
   const Vec2 size = f.box.hi - f.box.lo;
   const double width = pic.width_px;
   f.scale = (width - 2 * kMargin) / size.x();
-  const double height = std::ceil(size.y() * f.scale + 2 * kMargin + kTitle);
+  const double height = std::ceil(size.y() * f.scale + 2 * kMargin + kTitle + kFooter);
   f.height = height;
   const std::filesystem::path png = stem.string() + ".png";
   const std::filesystem::path svg = stem.string() + ".svg";

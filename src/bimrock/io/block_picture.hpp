@@ -26,7 +26,17 @@ struct BlockPicture {
   int width_px = 1000;
 };
 
-/// Writes `<stem>.png` and `<stem>.svg`.
+/// The length of a picture's scale bar for a drawing `width` wide [m]: the largest 1, 2 or 5
+/// times a power of ten that is at most a fifth of it.
+[[nodiscard]] double scale_bar_length(double width);
+
+/// How many times the displacements `u` are magnified in a picture of the model: so that the
+/// largest displacement of a block corner is `fraction` of `size` [m] (0: no displacement).
+[[nodiscard]] double displacement_magnification(const Model& model, const Eigen::VectorXd& u,
+                                                double fraction, double size);
+
+/// Writes `<stem>.png` and `<stem>.svg`: the blocks coloured by material (a legend names them
+/// where there are several), the magnification of the displacements, and a scale bar.
 void write_block_picture(const Model& model, const BlockPicture& picture,
                          const std::filesystem::path& stem);
 
