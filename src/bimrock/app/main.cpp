@@ -1,10 +1,13 @@
 // The bimrock command line: `run` a case, `check` a case without solving.
 // Errors a user can cause (InputError, ModelError) are caught here, once, and reported as one
 // clear message with a non-zero exit; nothing is written to the output folder then.
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <string>
+
+#include <unistd.h>
 
 #include <fmt/core.h>
 #include <CLI/CLI.hpp>
@@ -12,6 +15,7 @@
 #include <bimrock/analysis/elastic_analysis.hpp>
 #include <bimrock/analysis/plastic_analysis.hpp>
 #include <bimrock/io/case_reader.hpp>
+#include <bimrock/io/output_folder.hpp>
 #include <bimrock/io/results_writer.hpp>
 
 #include "bimrock/app/bench_command.hpp"
@@ -20,6 +24,21 @@
 #include "bimrock/app/report.hpp"
 
 namespace {
+
+// Ctrl-C and SIGTERM: the results of an interrupted run are never written (they are staged), and
+// its staging folder is removed by a shell that the handler becomes (execve is
+// async-signal-safe; removing a tree is not), which exits with 128 + the signal, as a shell's
+// interrupted command does.
+void on_interrupt(int signal) {
+  const char* staging = bimrock::staging_in_progress();
+  if (staging != nullptr) {
+    const char* argv[] = {"sh",   "-c",    "rm -rf -- \"$1\"; exit \"$2\"",
+                          "sh",   staging, signal == SIGINT ? "130" : "143",
+                          nullptr};
+    ::execv("/bin/sh", const_cast<char* const*>(argv));
+  }
+  ::_exit(128 + signal);
+}
 
 enum ExitCode { kOk = 0, kInputError = 2, kModelError = 3, kInternalError = 4, kStopped = 5 };
 
@@ -82,6 +101,8 @@ int check(const std::string& case_file, bool quiet) {
 
 int main(int argc, char** argv) {
   bimrock::ensure_openmp_environment(argv);
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
   CLI::App app{"bimrock: block-interfaces model of jointed rock masses (SI units)"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("bimrock ") + BIMROCK_VERSION);

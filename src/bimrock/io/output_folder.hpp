@@ -8,7 +8,9 @@ namespace bimrock {
 
 class StagingFolder {
  public:
-  /// Creates `<parent>/.<name>.partial-<pid>` for the results folder `target`. Throws
+  /// Creates `<parent>/.<name>.partial-<pid>` for the results folder `target`, after removing
+  /// the staging and old folders of `target` whose process is gone (a run killed with SIGKILL
+  /// leaves them). Throws
   /// std::runtime_error when `target` exists but is not a results folder (it would be replaced).
   explicit StagingFolder(std::filesystem::path target);
   /// Removes the staging folder unless commit() succeeded.
@@ -28,6 +30,11 @@ class StagingFolder {
   std::filesystem::path staging_;
   bool committed_ = false;
 };
+
+/// The staging folder of the StagingFolder now being written (one per process), or null: a
+/// signal handler may read it to remove the folder of an interrupted run. A later run removes
+/// what a killed one left, once it proves that run's process gone.
+[[nodiscard]] const char* staging_in_progress();
 
 /// Checks, before any work, that the results can be written to `folder`: it is absent, an empty
 /// folder or earlier results; the nearest existing folder above it is a folder one may create
