@@ -364,15 +364,9 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Ei
 
 std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update, Check check) {
-  const Eigen::Index m = size();
-  Solution out;
-  out.z = Eigen::VectorXd::Zero(m);
-  if (active.empty()) {  // then x = 0: no factorization
-    out.w = q();
-    out.w_scale = q().cwiseAbs();
-    out.regular = true;
+  Solution out = start(active);
+  if (active.empty())
     return out;
-  }
   // N_AA^-1 group by group, and the terms Phi_g N_gg^-1 C_g that describe the tangent.
   const std::optional<std::vector<Local>> found = locals(active, damping);
   if (!found)

@@ -16,6 +16,18 @@ constexpr double kSingularLocal = 1e-12;
 SplitLcpEquations::SplitLcpEquations(const SplitLcp& lcp, const SpdSolver& s)
     : lcp_(lcp), s_(s), c_transposed_(lcp.c->transpose()), n_transposed_(lcp.n->transpose()) {}
 
+ActiveSetEquations::Solution SplitLcpEquations::start(
+    const std::vector<Eigen::Index>& active) const {
+  Solution out;
+  out.z = Eigen::VectorXd::Zero(size());
+  if (active.empty()) {
+    out.w = q();
+    out.w_scale = q().cwiseAbs();
+    out.regular = true;
+  }
+  return out;
+}
+
 std::optional<std::vector<SplitLcpEquations::Local>> SplitLcpEquations::locals(
     const std::vector<Eigen::Index>& active, const Damping& damping) const {
   const bool damped = damping.factor.size() > 0;

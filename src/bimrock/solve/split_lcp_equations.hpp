@@ -62,6 +62,9 @@ class SplitLcpEquations : public ActiveSetEquations {
     Eigen::MatrixXd block;
     Eigen::MatrixXd inverse;
   };
+  /// A solution with z = 0, not yet regular; with no active rows, the whole answer (x = 0: no
+  /// factorization, w = q, regular).
+  [[nodiscard]] Solution start(const std::vector<Eigen::Index>& active) const;
   /// One Local per group of active rows (consecutive in `active`), N_rr of each scaled by
   /// 1 + damping.factor(r); nothing where a block is singular (e.g. both slip modes of a
   /// frictionless joint point): left to the dense route.

@@ -23,14 +23,9 @@ UnsymmetricTangentEquations::~UnsymmetricTangentEquations() = default;
 ActiveSetEquations::Solution UnsymmetricTangentEquations::solve(
     const std::vector<Eigen::Index>& active, const Damping& damping, Check check) {
   const Eigen::Index n = s_full_.rows();
-  Solution out;
-  out.z = Eigen::VectorXd::Zero(size());
-  if (active.empty()) {
-    out.w = q();
-    out.w_scale = q().cwiseAbs();
-    out.regular = true;
+  Solution out = start(active);
+  if (active.empty())
     return out;
-  }
   const std::optional<std::vector<Local>> found = locals(active, damping);
   if (!found)
     return out;
