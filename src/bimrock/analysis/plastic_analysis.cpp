@@ -392,7 +392,6 @@ struct Trial {
   int pivots = 0;
   int active_set_iterations = 0;
   int tangent_factorizations = 0;
-  int search_nodes = 0;  // LPs of the complete method (branch_and_bound_lcp.hpp)
   int rounds = 0;
 };
 
@@ -785,7 +784,6 @@ Trial try_increment(const StageContext& ctx, const AnalysisState& s, double step
         t.pivots += r.steps;
         if (r.status != LcpStatus::solved && r.status != LcpStatus::no_solution) {
           r = solvers.complete.solve(dense);
-          t.search_nodes += r.steps;
           if (std::getenv("BIMROCK_DEBUG_LCP"))
             std::fprintf(stderr, "  branch and bound on %d rows: %s, %d nodes\n", m,
                          to_string(r.status), r.steps);

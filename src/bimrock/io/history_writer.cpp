@@ -5,6 +5,7 @@
 
 #include <fmt/core.h>
 
+#include <bimrock/assembly/global_system.hpp>
 #include <bimrock/io/line_plot.hpp>
 
 namespace bimrock {
@@ -41,16 +42,12 @@ void write_history_csv(const Model& model, const PlasticResult& result,
 Vec2 plotted_direction(const Model& model, const Stage& stage) {
   if (stage.control)
     return stage.control->direction.normalized();
-  const double t = model.settings.thickness;
+  // The resultant force of the stage's loads: the translations' entries of its load vector
+  // (Q's first two rows are the identity, eq. 1), summed over the blocks.
+  const Eigen::VectorXd p = assemble_loads(model, stage.loads);
   Vec2 total = Vec2::Zero();
-  for (const PointLoad& p : stage.loads.points)
-    total += p.force;
-  for (const Traction& tr : stage.loads.tractions) {
-    const Vec2 s(-tr.outward_normal.y(), tr.outward_normal.x());
-    total += t * tr.segment.length() * (tr.normal * tr.outward_normal + tr.shear * s);
-  }
-  for (const Block& b : model.blocks)
-    total += t * b.area * model.block_materials[b.material].unit_weight * stage.loads.gravity;
+  for (int b = 0; b < model.n_blocks(); ++b)
+    total += p.segment<2>(6 * b);
   return total.norm() > 0.0 ? Vec2(total.normalized()) : Vec2(Vec2::UnitX());
 }
 

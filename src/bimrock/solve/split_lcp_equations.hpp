@@ -19,11 +19,10 @@
 #include <Eigen/SparseCore>
 
 #include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/sparse_cholesky.hpp>  // CholmodMatrix
 #include <bimrock/solve/spd_solver.hpp>
 
 namespace bimrock {
-
-using CholmodMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>;
 
 /// The sparse parts of the increment LCP (eqs. 24, 28), all in the unknowns of S (K, or K
 /// condensed) and the LCP's rows. The rows of a group (the modes of one yield point) are
