@@ -1,4 +1,4 @@
-// Block generation (issue 4): cutting a 100 m x 100 m square by three fully persistent joint
+// Block generation: cutting a 100 m x 100 m square by three fully persistent joint
 // sets. The argument N = (100 m / spacing)^2, the number of spacing-sized squares in the domain:
 // N = 100 (10 m, the CI smoke size), 2500 (2 m), 10000 (1 m), 40000 (0.5 m). Three sets in
 // general position give about sum |sin(dip_i - dip_j)| * N crossings inside, hence about as

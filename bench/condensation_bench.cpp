@@ -1,4 +1,4 @@
-// Kernel benchmarks of the static condensation of K onto a plastic zone (issue 5): K factorized
+// Kernel benchmarks of the static condensation of K onto a plastic zone: K factorized
 // with the zone's blocks ordered last (against BM_Factorize, K in its own best order), the
 // zone's Schur complement read from that factor, and a factorization of the Schur complement
 // (what each active-set iteration of a condensed analysis pays instead of a whole tangent's),

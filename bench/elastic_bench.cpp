@@ -1,4 +1,4 @@
-// Kernel benchmarks of the elastic analysis of a brick mass (issue 2; issue 5 adds the rest):
+// Kernel benchmarks of the elastic analysis of a brick mass:
 // model building (interface detection), assembly of K, symbolic and numeric factorization, one
 // solve, and the whole elastic analysis. Run `make bench`; report medians of the repetitions.
 #include <benchmark/benchmark.h>

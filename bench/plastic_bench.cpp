@@ -1,4 +1,4 @@
-// Benchmark of the nonlinear analysis (issue 3): the brick mass of brick_mass.hpp with plastic
+// Benchmark of the nonlinear analysis: the brick mass of brick_mass.hpp with plastic
 // joints (Mohr-Coulomb, friction 35 deg, cohesion 0.1 MPa) loaded by gravity in 5 increments,
 // with a tensile strength of 10 kPa (BM_PlasticGravity) or none (BM_PlasticGravityNoTension:
 // the vertical joints of a free-standing wall carry no normal stress, so nearly all of them sit
@@ -53,7 +53,7 @@ void BM_PlasticGravityNoTension(benchmark::State& state) {
 
 BENCHMARK(BM_PlasticGravity)->RangeMultiplier(10)->Range(100, 10000)->Unit(benchmark::kMillisecond);
 // Dense Lemke on ~3 rows per block: 10^3 blocks take ~10 s per increment; larger sizes wait for
-// the sparse LCP routes of issue 5.
+// the sparse LCP routes.
 BENCHMARK(BM_PlasticGravityNoTension)
     ->RangeMultiplier(10)
     ->Range(100, 1000)

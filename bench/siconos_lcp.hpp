@@ -1,6 +1,6 @@
 #pragma once
 // Siconos Numerics' dense LCP solvers behind our LcpSolver interface, and the comparison of two
-// solutions of one LCP: a peer for our solvers (issue 5), in bench/ only. Siconos is an optional
+// solutions of one LCP: a peer for our solvers, in bench/ only. Siconos is an optional
 // dependency of the benchmarks: this file and its .cpp are compiled only when it is found
 // (bench/CMakeLists.txt), and no Siconos header leaks out of the .cpp.
 #include <string>

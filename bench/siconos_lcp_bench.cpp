@@ -1,4 +1,4 @@
-// Our LCP solvers against a peer, Siconos Numerics (issue 5, item 3), on the dense LCPs of single
+// Our LCP solvers against a peer, Siconos Numerics, on the dense LCPs of single
 // increments of our own models (model_lcps.hpp): (a) the brick mass with no-tension joints at
 // its first gravity increment, (b) the jointed wall at its last increment before collapse, (c)
 // the same wall at an increment that ends exactly at its limit load. The argument is the model's

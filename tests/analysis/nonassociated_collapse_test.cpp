@@ -78,10 +78,11 @@ TEST(NonAssociatedCollapse, DisplacementControlPlateausWhereLoadControlProvesThe
 // Where no solver may decide an increment (here: every LCP on the tangent, and no dense route
 // or complete method behind it), the analysis stops, keeps what it carried, and says what to try.
 TEST(NonAssociatedCollapse, AnUndecidedIncrementStopsAndSaysWhatToTry) {
-  PlasticOptions o;
-  o.reduced_tangent_rows = 0;
-  o.dense_fallback_rows = 0;
-  const PlasticResult r = run_plastic_analysis(build_model(pull_out_case(30.0, 0.0)), o);
+  PlasticTuning tangent_only;
+  tangent_only.solver.reduced_tangent_rows = 0;
+  tangent_only.solver.dense_fallback_rows = 0;
+  const PlasticResult r =
+      run_plastic_analysis(build_model(pull_out_case(30.0, 0.0)), {}, {}, tangent_only);
   ASSERT_TRUE(r.stopped.has_value());
   EXPECT_FALSE(r.collapse.has_value());
   EXPECT_NE(r.stopped->reason.find("prescribe a monitor's displacement"), std::string::npos)

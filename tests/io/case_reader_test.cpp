@@ -96,6 +96,30 @@ TEST(CaseReader, ReadsTitleAndAnalysisSettings) {
   EXPECT_DOUBLE_EQ(c.spec.settings.penalty_factor, 1.0e6);
 }
 
+TEST(CaseReader, ReadsThePlasticAnalysisOptionsAndTheirDefaults) {
+  const Case given = read_case_string(kMinimal +
+                                          "analysis: {bracket_tolerance: 1.0e-3, "
+                                          "max_bisections: 12, max_rounds: 7, "
+                                          "yield_tolerance: 1.0e-8}\n",
+                                      "case.yaml");
+  EXPECT_DOUBLE_EQ(given.plastic.bracket_tolerance, 1.0e-3);
+  EXPECT_EQ(given.plastic.max_bisections, 12);
+  EXPECT_EQ(given.plastic.max_rounds, 7);
+  EXPECT_DOUBLE_EQ(given.plastic.yield_tolerance, 1.0e-8);
+  const Case defaults = read_case_string(kMinimal, "case.yaml");
+  EXPECT_DOUBLE_EQ(defaults.plastic.bracket_tolerance, PlasticOptions{}.bracket_tolerance);
+  EXPECT_EQ(defaults.plastic.max_bisections, PlasticOptions{}.max_bisections);
+}
+
+TEST(CaseReaderErrors, PlasticAnalysisOptionsOutOfRangeAreRejected) {
+  const Failure wide = error_of(kMinimal + "analysis: {bracket_tolerance: 0.6}\n");
+  EXPECT_EQ(wide.item, "analysis.bracket_tolerance");
+  EXPECT_NE(wide.message.find("at most 0.5"), std::string::npos) << wide.message;
+  const Failure none = error_of(kMinimal + "analysis: {max_bisections: 0}\n");
+  EXPECT_EQ(none.item, "analysis.max_bisections");
+  EXPECT_NE(none.message.find("from 1 to 200"), std::string::npos) << none.message;
+}
+
 TEST(CaseReader, ReadsBlockMaterialsInFileOrderWithTheirLines) {
   const Case c = read_case_string(kFullCase, "full.yaml");
   ASSERT_EQ(c.spec.block_materials.size(), 2u);

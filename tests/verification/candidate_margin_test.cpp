@@ -3,7 +3,7 @@
 // Source of the expected numbers: a second method on the same model. The abutment model of
 // `bimrock bench` (a jointed mass of 0.2 m blocks, Mohr-Coulomb joints with associated flow, a
 // thrust on a strip loaded to collapse) is run with candidates only where the elastic predictor
-// reaches yield (PlasticOptions::candidate_margin = 0) and with the default margin. Each
+// reaches yield (CandidateTuning::margin = 0) and with the default margin. Each
 // increment's LCP has a unique solution (associated flow: a convex program with a positive
 // definite elastic part), and rows that stay inactive do not change it: the carried stage
 // factors, the monitor's displacement and the collapse bracket must agree. The margin is there
@@ -25,7 +25,7 @@ int total_rounds(const PlasticResult& r) {
 }
 
 TEST(CandidateMargin, ChangesTheRoundsNotTheAnalysis) {
-  const PlasticResult exact = testing::run_abutment({.candidate_margin = 0.0});
+  const PlasticResult exact = testing::run_abutment({.candidates = {.margin = 0.0}});
   const PlasticResult margin = testing::run_abutment({});
   std::printf("no margin, then margin: %d and %d candidate rounds\n", total_rounds(exact),
               total_rounds(margin));

@@ -3,7 +3,7 @@
 //
 // Source of the expected numbers: a second method on the same model. The abutment model of
 // `bimrock bench` (a jointed mass, Mohr-Coulomb joints with associated flow, a thrust on a strip
-// loaded to collapse) is run once with K itself (PlasticOptions::condensed_zone_fraction = 0)
+// loaded to collapse) is run once with K itself (ZoneTuning::condensed_zone_fraction = 0)
 // and once condensed onto zones as small as the candidate points allow (fraction 1, least zone
 // 1 block): the carried stage factors, the monitor's displacements and the collapse bracket must
 // agree. The condensed run must have condensed onto a part of the model and more than once (a
@@ -21,25 +21,31 @@
 namespace bimrock {
 namespace {
 
-constexpr PlasticOptions kWhole{.condensed_zone_fraction = 0.0};
-constexpr PlasticOptions kCondensed{.condensed_zone_fraction = 1.0,
-                                    .least_zone_blocks = 1,
-                                    .condense_after_blocks = 0,
-                                    .zone_reserves = 0,
-                                    .region_growth = 0.0};
-constexpr PlasticOptions kReserves{.condensed_zone_fraction = 1.0,
-                                   .least_zone_blocks = 1,
-                                   .condense_after_blocks = 0,
-                                   .zone_reserves = 2,
-                                   .region_growth = 0.0};
-constexpr PlasticOptions kRegions{.condensed_zone_fraction = 1.0,
-                                  .least_zone_blocks = 1,
-                                  .condense_after_blocks = 0,
-                                  .zone_reserves = 2,
-                                  .region_growth = 3.0,
-                                  .region_fraction = 1.0};
+PlasticTuning zones(const ZoneTuning& zones) {
+  PlasticTuning t;
+  t.solver.zones = zones;
+  return t;
+}
 
-void expect_condensed(const PlasticResult& r, int blocks, const PlasticOptions& opt) {
+constexpr ZoneTuning kWhole{.condensed_zone_fraction = 0.0};
+constexpr ZoneTuning kCondensed{.condensed_zone_fraction = 1.0,
+                                .least_zone_blocks = 1,
+                                .condense_after_blocks = 0,
+                                .zone_reserves = 0,
+                                .region_growth = 0.0};
+constexpr ZoneTuning kReserves{.condensed_zone_fraction = 1.0,
+                               .least_zone_blocks = 1,
+                               .condense_after_blocks = 0,
+                               .zone_reserves = 2,
+                               .region_growth = 0.0};
+constexpr ZoneTuning kRegions{.condensed_zone_fraction = 1.0,
+                              .least_zone_blocks = 1,
+                              .condense_after_blocks = 0,
+                              .zone_reserves = 2,
+                              .region_growth = 3.0,
+                              .region_fraction = 1.0};
+
+void expect_condensed(const PlasticResult& r, int blocks, const ZoneTuning& opt) {
   EXPECT_GE(r.condensations, 2) << "no zone was outgrown";
   if (opt.zone_reserves > 0)
     EXPECT_GE(r.reserve_switches, 1) << "no reserve zone was used";
@@ -60,39 +66,39 @@ void expect_condensed(const PlasticResult& r, int blocks, const PlasticOptions& 
 }
 
 TEST(Condensation, GivesTheSameAnalysisAsTheWholeStiffness) {
-  const PlasticResult whole = testing::run_abutment(kWhole);
+  const PlasticResult whole = testing::run_abutment(zones(kWhole));
   EXPECT_EQ(whole.condensations, 1);
   EXPECT_EQ(whole.zone_blocks, static_cast<int>(whole.state.u.size() / 6));
-  for (const PlasticOptions& opt : {kCondensed, kReserves, kRegions}) {
-    const PlasticResult condensed = testing::run_abutment(opt);
+  for (const ZoneTuning& opt : {kCondensed, kReserves, kRegions}) {
+    const PlasticResult condensed = testing::run_abutment(zones(opt));
     expect_condensed(condensed, static_cast<int>(whole.state.u.size() / 6), opt);
     testing::expect_same_analysis(whole, condensed);
   }
 }
 
-// Until the candidates touch more than PlasticOptions::condense_after_blocks blocks, the LCPs
+// Until the candidates touch more than ZoneTuning::condense_after_blocks blocks, the LCPs
 // are solved on K itself: the same analysis whether that is never (more blocks than the
 // model has: K is never condensed) or for the first increments only (the default), after
 // which K is condensed as before.
 TEST(Condensation, KItselfUntilManyBlocksAreNeededGivesTheSameAnalysis) {
-  const PlasticResult whole = testing::run_abutment(kWhole);
-  PlasticOptions never = kReserves;
+  const PlasticResult whole = testing::run_abutment(zones(kWhole));
+  ZoneTuning never = kReserves;
   never.condense_after_blocks = 1'000'000;
-  const PlasticResult uncondensed = testing::run_abutment(never);
+  const PlasticResult uncondensed = testing::run_abutment(zones(never));
   EXPECT_EQ(uncondensed.condensations, 0);
   testing::expect_same_analysis(whole, uncondensed);
-  PlasticOptions later = kReserves;
-  later.condense_after_blocks = PlasticOptions{}.condense_after_blocks;
-  const PlasticResult condensed = testing::run_abutment(later);
+  ZoneTuning later = kReserves;
+  later.condense_after_blocks = ZoneTuning{}.condense_after_blocks;
+  const PlasticResult condensed = testing::run_abutment(zones(later));
   EXPECT_GE(condensed.condensations, 1);
-  EXPECT_LT(condensed.condensations, testing::run_abutment(kReserves).condensations);
+  EXPECT_LT(condensed.condensations, testing::run_abutment(zones(kReserves)).condensations);
   testing::expect_same_analysis(whole, condensed);
 }
 
 TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {
   // The monitor is driven to 70% of the displacement it had at the last load the abutment
   // carried under load control, along the way it moved, in 12 steps.
-  const PlasticResult loaded = testing::run_abutment(kWhole);
+  const PlasticResult loaded = testing::run_abutment(zones(kWhole));
   ASSERT_TRUE(loaded.collapse.has_value());
   const Vec2 reached = loaded.history.back().monitors[0];
   CaseSpec c = abutment_case(100, 25, 1.2 * abutment_collapse_shear());
@@ -101,7 +107,7 @@ TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {
   stage.control =
       DisplacementControlSpec{c.monitors[0].name, reached.normalized(), 0.7 * reached.norm(), {}};
   const Model model = build_model(c);
-  const PlasticResult whole = run_plastic_analysis(model, kWhole);
+  const PlasticResult whole = run_plastic_analysis(model, {}, {}, zones(kWhole));
   ASSERT_FALSE(whole.collapse || whole.stopped);
   const auto expect_same = [&](const PlasticResult& condensed) {
     ASSERT_EQ(whole.history.size(), condensed.history.size());
@@ -114,16 +120,16 @@ TEST(Condensation, UnderDisplacementControlGivesTheSameAnalysis) {
     EXPECT_LE((condensed.state.u - whole.state.u).cwiseAbs().maxCoeff(),
               1e-7 * whole.state.u.cwiseAbs().maxCoeff());
   };
-  for (const PlasticOptions& opt : {kCondensed, kReserves, kRegions}) {
-    const PlasticResult condensed = run_plastic_analysis(model, opt);
+  for (const ZoneTuning& opt : {kCondensed, kReserves, kRegions}) {
+    const PlasticResult condensed = run_plastic_analysis(model, {}, {}, zones(opt));
     expect_condensed(condensed, model.n_blocks(), opt);
     expect_same(condensed);
   }
   // K itself while few blocks are needed (its first LCPs need 20), then condensed: the monitor's
   // term is read from K, then in the zone's unknowns.
-  PlasticOptions later = kReserves;
+  ZoneTuning later = kReserves;
   later.condense_after_blocks = 40;
-  const PlasticResult condensed = run_plastic_analysis(model, later);
+  const PlasticResult condensed = run_plastic_analysis(model, {}, {}, zones(later));
   EXPECT_GE(condensed.condensations, 1);
   expect_same(condensed);
 }

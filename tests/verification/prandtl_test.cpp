@@ -1,4 +1,4 @@
-// Verification: Prandtl's strip footing on a mass of many small blocks (issue 3).
+// Verification: Prandtl's strip footing on a mass of many small blocks.
 //
 // Source of the expected number: a smooth strip footing on a weightless half-space of Tresca
 // material (undrained strength c) fails at the mean pressure q_u = (2 + pi) c = 5.1416 c

@@ -27,10 +27,10 @@ bool on_an_increment(double factor) {
 }
 
 TEST(StepRetry, CarriesTheRestOfACutIncrementToTheSameCollapse) {
-  const PlasticResult full = testing::run_abutment(PlasticOptions{});
+  const PlasticResult full = testing::run_abutment({});
   PlasticOptions limited;
   limited.max_rounds = 2;
-  const PlasticResult cut = testing::run_abutment(limited);
+  const PlasticResult cut = testing::run_abutment({}, 100, limited);
   ASSERT_FALSE(cut.stopped.has_value()) << cut.stopped->reason;
   testing::expect_same_analysis(full, cut);
   // The retry ran: a cut increment (between two whole ones) is followed by one that reaches

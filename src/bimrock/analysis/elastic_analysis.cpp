@@ -7,10 +7,9 @@
 
 namespace bimrock {
 
-ElasticSolution solve_elastic(const Model& model, bool track_memory) {
+ElasticSolution solve_elastic(const Model& model) {
   const KeptFactorMemoryRelease release_at_end;  // declared first: runs after the factor goes
   ElasticSolution s;
-  s.timings.track_memory = track_memory;
   {
     ScopedTimer t(s.timings, "check supports");
     check_supports(model);

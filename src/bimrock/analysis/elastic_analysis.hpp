@@ -20,8 +20,7 @@ struct ElasticSolution {
 
 /// Checks the supports, assembles and factorizes K, solves for the model's loads and evaluates
 /// every block and interface. Throws ModelError when the structure is not fully supported.
-/// @param track_memory record each phase's peak resident memory in the timings (benchmarks)
-ElasticSolution solve_elastic(const Model& model, bool track_memory = false);
+ElasticSolution solve_elastic(const Model& model);
 
 /// Evaluates block, interface and monitor results of the displacement vector solution.u, less
 /// the plastic parts of a nonlinear analysis where given.

@@ -1,5 +1,6 @@
 #include <bimrock/analysis/memory_probe.hpp>
 
+#include <atomic>
 #include <fstream>
 #include <string>
 
@@ -22,7 +23,17 @@ std::int64_t status_field(const std::string& key) {
   return -1;
 }
 
+std::atomic<bool> tracking{false};
+
 }  // namespace
+
+void set_memory_tracking(bool on) {
+  tracking = on;
+}
+
+bool memory_tracking() {
+  return tracking;
+}
 
 void reset_peak_memory() {
   std::ofstream clear("/proc/self/clear_refs");

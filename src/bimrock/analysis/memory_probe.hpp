@@ -6,6 +6,12 @@
 
 namespace bimrock {
 
+/// Whether ScopedTimer records each phase's peak (timings.hpp): a setting of the process, whose
+/// resident set it measures, made by benchmarks (off by default: a reset of the peak costs a walk
+/// of the page tables).
+void set_memory_tracking(bool on);
+[[nodiscard]] bool memory_tracking();
+
 /// Resets the peak (high-water mark) of the resident set to the current resident set.
 void reset_peak_memory();
 

@@ -15,9 +15,8 @@ namespace bimrock {
 struct Timings {
   /// (phase, seconds), in order; a phase in parentheses is a part of others, not summed.
   std::vector<std::pair<std::string, double>> phases;
-  /// When set, ScopedTimer also records each phase's peak resident memory (bytes) here; off by
-  /// default (resetting the peak costs a walk of the page tables).
-  bool track_memory = false;
+  /// With memory_tracking() on, ScopedTimer also records each phase's peak resident memory
+  /// (bytes) here.
   std::map<std::string, std::int64_t> peak_bytes;
 
   void add(const std::string& phase, double seconds) {
@@ -42,14 +41,14 @@ struct Timings {
 class ScopedTimer {
  public:
   ScopedTimer(Timings& timings, std::string phase) : timings_(timings), phase_(std::move(phase)) {
-    if (timings_.track_memory)
+    if (memory_tracking())
       reset_peak_memory();
     start_ = std::chrono::steady_clock::now();
   }
   ~ScopedTimer() {
     timings_.add(phase_,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
-    if (timings_.track_memory) {
+    if (memory_tracking()) {
       std::int64_t& peak = timings_.peak_bytes[phase_];
       peak = std::max(peak, peak_memory_bytes());
     }

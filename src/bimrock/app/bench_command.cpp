@@ -109,7 +109,7 @@ Run run_elastic(int n, const fs::path& scratch) {
   start = Clock::now();
   const std::vector<SharedEdge> edges = find_shared_edges(polygons, model.tolerance);
   add(run, "(of which interface detection)", seconds_since(start));
-  const ElasticSolution s = solve_elastic(model, true);
+  const ElasticSolution s = solve_elastic(model);
   run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
   add_timings(run, s.timings);
   start = Clock::now();
@@ -146,7 +146,7 @@ std::pair<int, int> plastic_zone(const Model& model, const std::vector<YieldPoin
           static_cast<int>(std::count(boundary.begin(), boundary.end(), 1))};
 }
 
-Run run_plastic(int n, int increments, JointFlow flow, const fs::path& scratch, TrialHints* hints) {
+Run run_plastic(int n, int increments, JointFlow flow, const fs::path& scratch) {
   Run run;
   release_free_memory();
   const double before = static_cast<double>(current_memory_bytes());
@@ -156,16 +156,13 @@ Run run_plastic(int n, int increments, JointFlow flow, const fs::path& scratch, 
   const Model model =
       build_model(abutment_case(n, increments, 1.2 * abutment_collapse_shear(), flow));
   add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
-  PlasticOptions options;
-  options.track_memory = true;
-  options.hints = hints;
   double writing = 0.0;
   PlasticResult result;
   std::vector<YieldPoint> points;  // for the verbose lines only
   {
     PlasticResultsWriter writer(model, {}, scratch / "plastic");
-    result = run_plastic_analysis(
-        model, options, [&](const IncrementRecord& r, const AnalysisState& st) {
+    result =
+        run_plastic_analysis(model, {}, [&](const IncrementRecord& r, const AnalysisState& st) {
           const auto w = Clock::now();
           writer.on_increment(r, st);
           if (std::getenv("BIMROCK_BENCH_VERBOSE")) {
@@ -221,9 +218,6 @@ struct Row {
   std::vector<std::pair<std::string, double>> median_seconds;
   std::map<std::string, double> peak_bytes;  // the largest over the repetitions
   double total = 0.0, limit = 0.0, run_peak = 0.0, limit_peak = 0.0;
-  double oracle = 0.0;  ///< median whole analysis of the oracle's replays (0: not run)
-  /// The oracle's median seconds per phase: where the floor's time goes.
-  std::map<std::string, double> oracle_seconds;
 };
 
 // Median seconds per phase over the runs, in the first run's order.
@@ -241,7 +235,7 @@ std::vector<std::pair<std::string, double>> median_phases(const std::vector<Run>
 }
 
 Row summarize(const std::string& model, const std::vector<Run>& runs) {
-  Row row{model, runs.front(), median_phases(runs), {}, 0, 0, 0, 0, 0, {}};
+  Row row{model, runs.front(), median_phases(runs), {}, 0, 0, 0, 0};
   std::vector<double> totals, limits;
   for (const Run& r : runs) {
     totals.push_back(total_without_writing(r));
@@ -270,30 +264,21 @@ void print_row(const Row& r) {
         r.first.yield_points, r.first.increments, r.first.lcp_rows_max,
         r.first.collapsed ? ", collapsed" : "", r.first.condensations, r.first.regions,
         r.first.reserve_switches, r.first.zone_blocks);
-  const bool oracle = r.oracle > 0.0;
-  fmt::print("\n  {:<34} {:>10} {:>10}{}\n", "phase", "median s", "RSS peak",
-             oracle ? fmt::format(" {:>10}", "oracle s") : "");
+  fmt::print("\n  {:<34} {:>10} {:>10}\n", "phase", "median s", "RSS peak");
   for (const auto& [phase, s] : r.median_seconds) {
     const auto peak = r.peak_bytes.find(phase);
-    const auto o = r.oracle_seconds.find(phase);
     fmt::print(
-        "  {:<34} {:>10.3f} {:>10}{}\n", phase, s,
-        peak == r.peak_bytes.end() ? std::string("-") : fmt::format("{:.0f}", mib(peak->second)),
-        !oracle                       ? ""
-        : o == r.oracle_seconds.end() ? fmt::format(" {:>10}", "-")
-                                      : fmt::format(" {:>10.3f}", o->second));
+        "  {:<34} {:>10.3f} {:>10}\n", phase, s,
+        peak == r.peak_bytes.end() ? std::string("-") : fmt::format("{:.0f}", mib(peak->second)));
   }
   fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "whole analysis (without writing)", r.total,
              mib(r.run_peak));
   fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "physical limit (K + CHOLMOD alone)", r.limit,
              mib(r.limit_peak));
-  if (r.oracle > 0.0)
-    fmt::print("  {:<34} {:>10.3f}\n", "oracle (each trial's LCP known)", r.oracle);
   fmt::print("  (RSS peak: the process's resident set in MiB; the last two rows: its growth)\n");
   // A growth under 1 MiB (the smallest models) is the allocator's noise: no memory ratio then.
-  fmt::print("  ratio to the limit: time {:.2f}, memory {}{}\n", r.total / r.limit,
-             mib(r.limit_peak) >= 1.0 ? fmt::format("{:.2f}", r.run_peak / r.limit_peak) : "-",
-             r.oracle > 0.0 ? fmt::format(", oracle's time {:.2f}", r.oracle / r.limit) : "");
+  fmt::print("  ratio to the limit: time {:.2f}, memory {}\n", r.total / r.limit,
+             mib(r.limit_peak) >= 1.0 ? fmt::format("{:.2f}", r.run_peak / r.limit_peak) : "-");
 }
 
 nlohmann::json to_json(const Row& r) {
@@ -302,8 +287,6 @@ nlohmann::json to_json(const Row& r) {
     nlohmann::json p = {{"phase", phase}, {"median_seconds", s}};
     if (const auto peak = r.peak_bytes.find(phase); peak != r.peak_bytes.end())
       p["peak_bytes"] = peak->second;
-    if (const auto o = r.oracle_seconds.find(phase); o != r.oracle_seconds.end())
-      p["oracle_median_seconds"] = o->second;
     phases.push_back(p);
   }
   return {{"model", r.model},
@@ -324,11 +307,8 @@ nlohmann::json to_json(const Row& r) {
           {"time_ratio", r.total / r.limit},
           {"whole_peak_bytes", r.run_peak},
           {"limit_peak_bytes", r.limit_peak},
-          {"memory_ratio",
-           mib(r.limit_peak) >= 1.0 ? nlohmann::json(r.run_peak / r.limit_peak) : nlohmann::json()},
-          {"oracle_seconds", r.oracle > 0.0 ? nlohmann::json(r.oracle) : nlohmann::json()},
-          {"oracle_time_ratio",
-           r.oracle > 0.0 ? nlohmann::json(r.oracle / r.limit) : nlohmann::json()}};
+          {"memory_ratio", mib(r.limit_peak) >= 1.0 ? nlohmann::json(r.run_peak / r.limit_peak)
+                                                    : nlohmann::json()}};
 }
 
 void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
@@ -339,7 +319,6 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
   for (const std::string model : {"elastic", "plastic", "nonassociated"}) {
     PlotSeries t{model + " analysis", {}, {}}, l{model + ": CHOLMOD alone", {}, {}};
     PlotSeries m{model + " analysis", {}, {}}, ml{model + ": CHOLMOD alone", {}, {}};
-    PlotSeries o{model + ": oracle (each LCP known)", {}, {}};
     for (const Row& r : rows) {
       if (r.model != model)
         continue;
@@ -349,16 +328,10 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
       l.y.push_back(r.limit);
       m.y.push_back(mib(r.run_peak));
       ml.y.push_back(mib(r.limit_peak));
-      if (r.oracle > 0.0) {
-        o.x.push_back(r.first.blocks);
-        o.y.push_back(r.oracle);
-      }
     }
     if (t.x.empty())
       continue;
     time.series.insert(time.series.end(), {t, l});
-    if (!o.x.empty())
-      time.series.push_back(o);
     memory.series.insert(memory.series.end(), {m, ml});
   }
   write_line_plot(time, folder / "bench_time");
@@ -370,6 +343,7 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
 int run_bench(const BenchOptions& options) {
   const fs::path scratch = fs::temp_directory_path() / fmt::format("bimrock-bench-{}", ::getpid());
   fs::create_directories(scratch);
+  set_memory_tracking(true);  // each phase's peak resident memory, in the timings
   fmt::print("bimrock bench: {} hardware threads, {} repetitions, medians; SI units\n",
              std::thread::hardware_concurrency(), options.repetitions);
   std::vector<Row> rows;
@@ -378,26 +352,13 @@ int run_bench(const BenchOptions& options) {
         model == "elastic" ? options.elastic_sizes : options.plastic_sizes;
     for (int n : sizes) {
       std::vector<Run> runs;
-      TrialHints hints;  // recorded by the first repetition, for the oracle
-      const bool oracle = options.oracle && model == "plastic";
       // "nonassociated": the plastic model with joints of no dilation.
       const JointFlow flow =
           model == "nonassociated" ? JointFlow::no_dilation : JointFlow::associated;
       for (int rep = 0; rep < options.repetitions; ++rep)
         runs.push_back(model == "elastic" ? run_elastic(n, scratch)
-                                          : run_plastic(n, options.increments, flow, scratch,
-                                                        oracle && rep == 0 ? &hints : nullptr));
+                                          : run_plastic(n, options.increments, flow, scratch));
       rows.push_back(summarize(model, runs));
-      if (oracle) {
-        hints.mode = TrialHints::Mode::replay;
-        std::vector<Run> replays;
-        for (int rep = 0; rep < options.repetitions; ++rep)
-          replays.push_back(run_plastic(n, options.increments, flow, scratch, &hints));
-        const Row replayed = summarize(model, replays);
-        rows.back().oracle = replayed.total;
-        rows.back().oracle_seconds = {replayed.median_seconds.begin(),
-                                      replayed.median_seconds.end()};
-      }
       print_row(rows.back());
       std::fflush(stdout);
     }

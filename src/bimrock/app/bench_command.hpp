@@ -15,9 +15,6 @@ struct BenchOptions {
   int increments = 25;  ///< of the plastic model's loading stage
   std::string json;     ///< write the table as JSON here too ("" : no)
   std::string plot;     ///< write bench_time.png/svg and bench_memory.png/svg here ("" : no)
-  /// Plastic models: also time the oracle (analysis/trial_hints.hpp), replaying what the first
-  /// repetition's trials ended with, as many times as the repetitions.
-  bool oracle = false;
 };
 
 /// Runs the benchmark, prints the table; returns the process exit code.

@@ -71,7 +71,7 @@ int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
   bimrock::PlasticResultsWriter writer(model, c.output, out);
   double elapsed = 0.0;
   const bimrock::PlasticResult result = bimrock::run_plastic_analysis(
-      model, {}, [&](const bimrock::IncrementRecord& r, const bimrock::AnalysisState& s) {
+      model, c.plastic, [&](const bimrock::IncrementRecord& r, const bimrock::AnalysisState& s) {
         writer.on_increment(r, s);
         elapsed += r.seconds;
         if (!quiet)
@@ -146,8 +146,6 @@ int main(int argc, char** argv) {
       ->add_option("--increments", bench.increments, "increments of the abutment's loading stage")
       ->check(CLI::PositiveNumber);
   bench_cmd->add_option("--json", bench.json, "also write the table as JSON to this file");
-  bench_cmd->add_flag("--oracle", bench.oracle,
-                      "plastic models: also time a replay that knows each trial's LCP (a floor)");
   bench_cmd->add_option("--plot", bench.plot,
                         "write bench_time and bench_memory plots (PNG, SVG) to this folder");
 

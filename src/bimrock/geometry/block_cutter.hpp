@@ -1,5 +1,5 @@
 #pragma once
-/// @file Cutting a rock domain into convex blocks along joint traces (issue 4).
+/// @file Cutting a rock domain into convex blocks along joint traces.
 ///
 /// The outline, holes, zone outlines and traces are overlaid in one exact arrangement (CGAL,
 /// exact constructions: every crossing is found and placed exactly, however close). Then:

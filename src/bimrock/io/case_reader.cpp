@@ -50,6 +50,10 @@ constexpr std::array kKeys = {
     CaseKey{"analysis", "plane"},
     CaseKey{"analysis", "thickness"},
     CaseKey{"analysis", "penalty_factor"},
+    CaseKey{"analysis", "bracket_tolerance"},
+    CaseKey{"analysis", "max_bisections"},
+    CaseKey{"analysis", "max_rounds"},
+    CaseKey{"analysis", "yield_tolerance"},
     CaseKey{"materials.<name>", "E", true},
     CaseKey{"materials.<name>", "nu", true},
     CaseKey{"materials.<name>", "unit_weight"},
@@ -354,6 +358,31 @@ AnalysisSettings read_analysis(const Value& v) {
   if (const auto p = m.find("penalty_factor"))
     s.penalty_factor = positive(*p);
   return s;
+}
+
+/// The analysis section's options of a plastic analysis (docs/case-file.md), each in its range.
+PlasticOptions read_plastic_options(const Value& v) {
+  const Map m = open(v, "analysis");
+  PlasticOptions o;
+  const auto fraction = [&](const char* key, double& field, double most) {
+    if (const auto x = m.find(key)) {
+      field = positive(*x);
+      if (field > most)
+        x->fail(fmt::format("must be at most {}", most));
+    }
+  };
+  const auto count = [&](const char* key, int& field, int most) {
+    if (const auto x = m.find(key)) {
+      field = x->integer();
+      if (field < 1 || field > most)
+        x->fail(fmt::format("must be a whole number from 1 to {}", most));
+    }
+  };
+  fraction("bracket_tolerance", o.bracket_tolerance, 0.5);
+  fraction("yield_tolerance", o.yield_tolerance, 1e-3);
+  count("max_bisections", o.max_bisections, 200);
+  count("max_rounds", o.max_rounds, 1000);
+  return o;
 }
 
 /// A map name -> item (materials, joint_materials); names must not be empty.
@@ -977,8 +1006,10 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
   CaseSpec& s = c.spec;
   s.file = file;
   s.title = m.text_or("title", "");
-  if (const auto v = m.find("analysis"))
+  if (const auto v = m.find("analysis")) {
     s.settings = read_analysis(*v);
+    c.plastic = read_plastic_options(*v);
+  }
   if (const auto v = m.find("materials")) {
     s.block_materials = read_named(*v, read_block_material);
     if (s.block_materials.empty())

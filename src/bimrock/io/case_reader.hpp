@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include <bimrock/analysis/plastic_options.hpp>
 #include <bimrock/model/case_spec.hpp>
 
 namespace bimrock {
@@ -19,6 +20,7 @@ struct OutputOptions {
 struct Case {
   CaseSpec spec;
   OutputOptions output;
+  PlasticOptions plastic;  ///< the analysis section's options of a plastic analysis
 };
 
 /// Reads and checks the syntax of a case file (unknown keys, types, required keys); the model

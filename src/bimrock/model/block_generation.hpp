@@ -1,5 +1,5 @@
 #pragma once
-/// @file The blocks of a case given by its domain and joint sets (issue 4): cut by the joint
+/// @file The blocks of a case given by its domain and joint sets: cut by the joint
 /// traces (geometry/block_cutter), optionally subdivided into Voronoi cells, each block with its
 /// zone's material, and for each pair of touching blocks the joint material between them.
 #include <map>

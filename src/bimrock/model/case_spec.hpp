@@ -120,7 +120,7 @@ struct MeshMaterialSpec {
   SourceRef source;
 };
 
-/// Blocks imported from a mesh (the case file's `mesh`, issue 4): one block per cell, its
+/// Blocks imported from a mesh (the case file's `mesh`): one block per cell, its
 /// material from its physical surface; the cells are joined by `interfaces`.
 struct MeshSpec {
   std::string file;                         ///< the mesh file, as read (for messages)

@@ -14,11 +14,11 @@
 /// ratio test unique and so rules out cycling on degenerate problems (zero entries of q, equal
 /// rows of M). When z0 ties for leaving it leaves: the method ends at once.
 ///
-/// Robustness (docs/formulation.md): M = N - C K^-1 Phi is formed by cancellation and is singular
-/// at a mechanism. So (1) entries below zero_tolerance * max|M_ij| are taken as round-off zeros,
-/// (2) rows and columns are equilibrated by powers of two (exact) before pivoting, (3) an entry
-/// of the entering column counts as a pivot only if it stands out from the round-off of its own
-/// computation, and (4) the result is polished: the final active set {i : z_i basic} is solved
+/// Robustness (docs/solution-strategy.md): M = N - C K^-1 Phi is formed by cancellation and is
+/// singular at a mechanism. So (1) entries below zero_tolerance * max|M_ij| are taken as round-off
+/// zeros, (2) rows and columns are equilibrated by powers of two (exact) before pivoting, (3) an
+/// entry of the entering column counts as a pivot only if it stands out from the round-off of its
+/// own computation, and (4) the result is polished: the final active set {i : z_i basic} is solved
 /// again with a dense LU of the unscaled M, and checked in unscaled form. An active set that
 /// turns out singular with a certificate of infeasibility (r >= 0, M^T r ~ 0, q . r < 0) is a
 /// collapse; any other failed check is a numerical_failure, never a bogus solution.

@@ -1,4 +1,4 @@
-#include <bimrock/analysis/condensed_stiffness.hpp>
+#include <bimrock/solve/condensed_stiffness.hpp>
 
 #include <algorithm>
 #include <memory>

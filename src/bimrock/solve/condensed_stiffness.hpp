@@ -1,5 +1,5 @@
 #pragma once
-/// @file The stiffness condensed statically onto the plastic zone (issue 5). Yield rows touch
+/// @file The stiffness condensed statically onto the plastic zone. Yield rows touch
 /// only the unknowns of the blocks their points join: with P the unknowns of a zone of blocks
 /// that holds every candidate point of an increment and E the others, the LCP matrix (eq. 28)
 ///

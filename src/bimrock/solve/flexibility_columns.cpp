@@ -1,4 +1,4 @@
-#include <bimrock/analysis/flexibility_columns.hpp>
+#include <bimrock/solve/flexibility_columns.hpp>
 
 #include <algorithm>
 #include <chrono>

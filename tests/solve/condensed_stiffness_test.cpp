@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include <bimrock/analysis/condensed_stiffness.hpp>
 #include <bimrock/model/model.hpp>
+#include <bimrock/solve/condensed_stiffness.hpp>
 
 #include "support/cases.hpp"
 

@@ -1,0 +1,315 @@
+#include <bimrock/analysis/increment.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <bimrock/assembly/yield_modes.hpp>  // kOpeningMode
+
+namespace bimrock {
+namespace {
+
+/// Plastic displacements of a load-controlled step more than this many times its elastic ones
+/// are a mechanism resolved only by round-off (see round_off_mechanism()).
+constexpr double kMechanismRatio = 1e6;
+
+// The elastic predictor: the increment if nothing yielded (eq. 24 with lambda = 0).
+Eigen::VectorXd elastic_increment(const StageContext& ctx, double step) {
+  const bool control = ctx.stage.control.has_value();
+  return (control ? step / ctx.control_rate : step) * ctx.x_ref;
+}
+
+// The largest violation of any yield function (unscaled, in Pa) and the points that violate them
+// by more than tol; `all` gets every value.
+std::vector<int> check_all_yield_functions(const StageContext& ctx, const AnalysisState& s,
+                                           double tol, YieldValues& all) {
+  ctx.yield.evaluate(s.points, s.u, all);
+  std::vector<int> violators;
+  for (std::size_t p = 0; p < ctx.points.size(); ++p)
+    if (all.largest(p) > tol)
+      violators.push_back(static_cast<int>(p));
+  return violators;
+}
+
+// The plastic state after multipliers lambda (eqs. 29-35): an opening row's z is the total gap.
+void update_state(const YieldSystem& sys, const Eigen::VectorXd& lambda, const Eigen::VectorXd& z,
+                  const std::vector<YieldPoint>& points, AnalysisState& s) {
+  for (int r = 0; r < sys.size(); ++r) {
+    const YieldRow& row = sys.rows[r];
+    PlasticState& ps = s.points[row.point];
+    if (points[row.point].is_interface() && row.mode == kOpeningMode) {
+      ps.plastic(0) += lambda(r);
+      ps.gap = z(r);
+      ps.max_gap = std::max(ps.max_gap, ps.gap);
+    } else {
+      ps.plastic += sys.flow[r] * lambda(r);
+      ps.slip += lambda(r);
+    }
+  }
+}
+
+// The fraction of the step at which the first softening law of a joint reaches its residual
+// value (its slope changes there, so a linear step must not run past it), or 1.
+double first_kink(const Model& model, const std::vector<YieldPoint>& points,
+                  const AnalysisState& before, const AnalysisState& after) {
+  double fraction = 1.0;
+  auto crossing = [&](double old_kappa, double new_kappa, const Softening& law) {
+    const double d = law.distance;
+    if (!std::isfinite(d) || law.peak == law.residual)
+      return;
+    const double margin = Softening::kKinkTolerance * std::max(d, 1e-300);
+    if (old_kappa < d - margin && new_kappa > d + margin)
+      fraction = std::min(fraction, (d - old_kappa) / (new_kappa - old_kappa));
+  };
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (!points[p].is_interface())
+      continue;
+    const JointStrength& law = *model.joint_materials[points[p].material].strength;
+    crossing(before.points[p].slip, after.points[p].slip, law.cohesion);
+    crossing(before.points[p].slip, after.points[p].slip, law.friction);
+    crossing(before.points[p].max_gap, after.points[p].max_gap, law.tensile);
+  }
+  return fraction;
+}
+
+// The (point, mode) rows a solve starts from after an LCP's multipliers z: the active ones and
+// the joints whose gap changed (z is the total gap of an opening row).
+std::set<std::pair<int, int>> active_rows(const YieldSystem& sys, const Eigen::VectorXd& z,
+                                          const Eigen::VectorXd& gap_old) {
+  std::set<std::pair<int, int>> rows;
+  for (int r = 0; r < sys.size(); ++r)
+    if (z(r) != gap_old(r) || z(r) > 0.0)
+      rows.insert({sys.rows[r].point, sys.rows[r].mode});
+  return rows;
+}
+
+// The warm start of the next round: the rows of z, and the modes of `violated` points whose yield
+// function exceeds tol (a solve from z's rows would find just these violated, w = -f).
+std::set<std::pair<int, int>> next_warm_rows(const YieldSystem& sys, const Eigen::VectorXd& z,
+                                             const Eigen::VectorXd& gap_old,
+                                             const std::vector<int>& violated, const YieldValues& f,
+                                             double tol) {
+  std::set<std::pair<int, int>> rows = active_rows(sys, z, gap_old);
+  for (int p : violated) {
+    const auto values = f.of(static_cast<std::size_t>(p));
+    for (Eigen::Index k = 0; k < values.size(); ++k)
+      if (values(k) > tol)
+        rows.insert({p, static_cast<int>(k)});
+  }
+  return rows;
+}
+
+// The round's LCP (eqs. 24-28): nu = -f0 - C dU + N lambda with dU = dfactor x_ref + K^-1 Phi
+// lambda; under displacement control dfactor = (step - h . lambda) / rate, h_r = control .
+// K^-1 phi_r, keeps the monitor on its prescribed path. Warm: the rows in `warm_rows`, and the
+// open joints.
+IncrementLcp round_lcp(const StageContext& ctx, const YieldSystem& sys, const AnalysisState& s,
+                       double step, const std::set<std::pair<int, int>>& warm_rows) {
+  const bool control = ctx.stage.control.has_value();
+  const Eigen::VectorXd cx = sys.c * ctx.x_ref;
+  const double load = control ? step / ctx.control_rate : step;
+  IncrementLcp lcp{sys, ctx.points, -sys.f0 - cx * load, {}, {}, nullptr, {}, {}};
+  if (control) {
+    lcp.control = &ctx.control;
+    lcp.control_term = cx / ctx.control_rate;
+  } else {
+    lcp.load_part = -cx * step;
+  }
+  const int m = sys.size();
+  lcp.gap_old = Eigen::VectorXd::Zero(m);
+  lcp.warm = Eigen::VectorXd::Zero(m);
+  for (int r = 0; r < m; ++r) {
+    const YieldRow& row = sys.rows[r];
+    if (ctx.points[row.point].is_interface() && row.mode == kOpeningMode)
+      lcp.gap_old(r) = s.points[row.point].gap;
+    if (lcp.gap_old(r) > 0.0 || warm_rows.count({row.point, row.mode}))
+      lcp.warm(r) = 1.0;
+  }
+  return lcp;
+}
+
+// On the reduced tangent, near a collapse, projected Newton can take many steps on a round's LCP
+// that lacks the points of the mechanism: each iterate shown (SolverTuning::interrupt_after) is
+// checked on every point, and points outside the LCP that it violates end the round at once (the
+// next round holds them). A round on the points around the flow that stalls, shown twice as many
+// iterates, ends too: past a collapse the larger LCP can leave projected Newton lowering its
+// objective without end, where the smaller one's rounds find the mechanism's certificate.
+struct IterateCheck {
+  const StageContext& ctx;
+  const AnalysisState& s;
+  const YieldSystem& sys;
+  const IncrementLcp& lcp;
+  const Candidates& candidates;
+  const IncrementSolver& solver;
+  double step;
+  double tol;
+  int stall_after;
+  std::vector<int> outside;  // points outside the LCP that the last iterate violates
+  YieldValues f;             // every yield function at the last iterate
+  int shown = 0;
+
+  bool operator()(const LcpResult& iterate) {
+    AnalysisState at = s;  // the tangent route runs under load control only
+    const Eigen::VectorXd lambda = iterate.z - lcp.gap_old;
+    at.u += step * ctx.x_ref + ctx.k.solve(Eigen::VectorXd(sys.phi * lambda));
+    update_state(sys, lambda, iterate.z, ctx.points, at);
+    outside.clear();
+    const std::vector<int> in = candidates.in_lcp(solver);
+    for (int p : check_all_yield_functions(ctx, at, tol, f))
+      if (!std::binary_search(in.begin(), in.end(), p))
+        outside.push_back(p);
+    return !outside.empty() || (candidates.around() && ++shown > stall_after);
+  }
+};
+
+// A mechanism that round-off turned into a very soft mode: with stiff (penalty) interfaces K^-1
+// is accurate only to ~ penalty x machine precision, so the exact null direction of M (e.g. all
+// blocks flowing plastically together) appears as a tiny positive eigenvalue and the multipliers
+// blow up instead of a certificate being found. Plastic displacements that dwarf the elastic
+// ones of the same step are that mechanism.
+bool round_off_mechanism(const StageContext& ctx, const Eigen::VectorXd& plastic_du, double step) {
+  if (ctx.stage.control)
+    return false;
+  const double elastic = std::abs(step) * ctx.x_ref.cwiseAbs().maxCoeff();
+  return plastic_du.cwiseAbs().maxCoeff() > kMechanismRatio * elastic;
+}
+
+// Adds a solve's work to the trial's; whether it ran on the reduced tangent.
+bool tally(const IncrementSolution& solution, Trial& t) {
+  t.active_set_iterations += solution.active_set_iterations;
+  t.tangent_factorizations += solution.tangent_factorizations;
+  t.pivots += solution.pivots;
+  return solution.on_tangent;
+}
+
+// A collapse with the mechanism's multipliers `ray` (none: no certificate), and its displacements
+// unless the caller gave them.
+Trial collapse(const YieldSystem& sys, const Eigen::VectorXd& ray, const StageContext& ctx,
+               Trial t) {
+  t.status = Trial::Status::collapse;
+  t.rows = sys.rows;
+  t.ray = ray;
+  if (ray.size() > 0 && t.du.size() == 0)
+    t.du = ctx.k.solve(Eigen::VectorXd(sys.phi * ray));
+  return t;
+}
+
+// The elastic predictor's yield functions: f now, f at U + dU_elastic (f is linear in the stress
+// for a given plastic state), and the tolerance of the checks (a fraction of the stress scale).
+struct Prediction {
+  YieldValues now;
+  YieldValues predicted;
+  double tol = 0.0;
+};
+
+Prediction predict(const StageContext& ctx, const AnalysisState& s, double step,
+                   double yield_tolerance) {
+  Prediction p;
+  double scale = 0.0;
+  ctx.yield.evaluate(s.points, s.u, p.now, &scale);
+  ctx.yield.evaluate(s.points, Eigen::VectorXd(s.u + elastic_increment(ctx, step)), p.predicted,
+                     &scale);
+  p.tol = yield_tolerance * std::max(scale, 1.0);
+  return p;
+}
+
+}  // namespace
+
+Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double step,
+                      const PlasticOptions& options, const CandidateTuning& tuning,
+                      IncrementSolver& solver, IncrementMemory& memory) {
+  Trial t;
+  LapTimer clock(ctx.timings);
+  const Prediction p = predict(ctx, s, step, options.yield_tolerance);
+  const double tol = p.tol;
+  // Select the candidate rows, and warm-start from the rows that yielded in the last increment.
+  Candidates candidates(ctx.model, ctx.points, s.points, p.now, p.predicted, tol, tuning,
+                        memory.last_on_tangent ? &memory.last_active : nullptr);
+  std::set<std::pair<int, int>> warm_rows = memory.last_active;
+  clock.lap("increments: candidates");
+  bool on_tangent = false;  // the last round's LCP ran on the reduced tangent
+  for (t.rounds = 1; t.rounds <= options.max_rounds; ++t.rounds) {
+    // The LCP holds every block the required points touch, and under displacement control the
+    // monitor's.
+    std::vector<char> blocks = candidates.required_blocks();
+    if (std::find(blocks.begin(), blocks.end(), 1) != blocks.end()) {
+      if (ctx.stage.control)
+        blocks[static_cast<std::size_t>(ctx.model.monitors[ctx.stage.control->monitor].block)] = 1;
+      solver.hold(blocks);
+    }
+    clock.lap("increments: condensation");
+    const YieldSystem sys =
+        assemble_yield_system(ctx.model, ctx.points, s.points, s.u, candidates.in_lcp(solver));
+    clock.lap("increments: yield rows");
+    t.lcp_size = sys.size();
+    // Solve the increment's LCP.
+    const IncrementLcp lcp = round_lcp(ctx, sys, s, step, warm_rows);
+    Eigen::VectorXd z = lcp.gap_old;
+    if (sys.size() > 0) {
+      IterateCheck check{
+          ctx, s, sys, lcp, candidates, solver, step, tol, solver.tuning().interrupt_after, {}, {}};
+      const IncrementSolver::Interrupt interrupt = std::ref(check);
+      const IncrementSolution solution = solver.solve(lcp, &interrupt, candidates.around());
+      on_tangent = tally(solution, t);
+      clock.lap("increments: LCP", "increments: K^-1 Phi columns", solution.columns_seconds);
+      using Outcome = IncrementSolution::Outcome;
+      if (solution.outcome == Outcome::interrupted) {
+        // The next round holds the points the iterate violates, or goes on without the points
+        // around the flow where it stalled on them.
+        ++memory.interrupted_rounds;
+        if (check.outside.empty()) {
+          candidates.drop_around();
+          ++memory.rounds_without_around;
+        }
+        candidates.require(check.outside, check.f, solver);
+        warm_rows = next_warm_rows(sys, solution.z, lcp.gap_old, check.outside, check.f, tol);
+        continue;
+      }
+      if (solution.outcome == Outcome::no_solution) {
+        t.proven_fraction = solution.proven_fraction;
+        return collapse(sys, solution.ray, ctx, std::move(t));
+      }
+      if (solution.outcome == Outcome::undecided)
+        return t;  // failed: the caller cuts the step
+      z = solution.z;
+    }
+    // Update: the displacements of the whole model (a solve with K's factor) and the plastic
+    // state.
+    const Eigen::VectorXd lambda = z - lcp.gap_old;
+    const Eigen::VectorXd plastic_du = sys.size() > 0
+                                           ? ctx.k.solve(Eigen::VectorXd(sys.phi * lambda))
+                                           : Eigen::VectorXd::Zero(ctx.model.n_dofs());
+    if (round_off_mechanism(ctx, plastic_du, step)) {
+      const double top = lambda.cwiseAbs().maxCoeff();
+      t.du = plastic_du / top;
+      return collapse(sys, lambda.cwiseAbs() / top, ctx, std::move(t));
+    }
+    const double dfactor =
+        ctx.stage.control ? (step - ctx.control.dot(plastic_du)) / ctx.control_rate : step;
+    t.du = dfactor * ctx.x_ref + plastic_du;
+    t.next = s;
+    t.next.u += t.du;
+    t.next.stage_factor += dfactor;
+    update_state(sys, lambda, z, ctx.points, t.next);
+    // Check every yield function: the points violated outside the LCP join the next round.
+    YieldValues f_next;
+    const std::vector<int> violators = check_all_yield_functions(ctx, t.next, tol, f_next);
+    clock.lap("increments: update and check");
+    const std::size_t added = candidates.require(violators, f_next, solver);
+    warm_rows = next_warm_rows(sys, z, lcp.gap_old, added > 0 ? violators : std::vector<int>{},
+                               f_next, tol);
+    if (added == 0) {
+      memory.last_active = warm_rows;
+      memory.last_on_tangent = on_tangent;
+      t.rows = sys.rows;
+      t.lambda = lambda;
+      t.status = Trial::Status::carried;
+      t.kink = first_kink(ctx.model, ctx.points, s, t.next);
+      return t;
+    }
+  }
+  return t;  // failed: no round without violated points
+}
+
+}  // namespace bimrock

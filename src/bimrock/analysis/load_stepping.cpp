@@ -1,0 +1,100 @@
+#include <bimrock/analysis/load_stepping.hpp>
+
+#include <cmath>
+
+namespace bimrock {
+namespace {
+
+/// Where a certificate bounds the collapse load, the trials go this far towards the bound (each
+/// carried one shrinks the bracket tenfold) until one fails: the bound is often the collapse load
+/// itself (its mechanism is the one that forms), where halving would take ~log2(gap /
+/// tolerance) carried trials.
+constexpr double kAimAtBound = 0.9;
+/// At most this many kinks of softening laws inside one step.
+constexpr int kMostKinks = 100;
+
+}  // namespace
+
+SteppedIncrement step_increment(double step, double factor, const TryStep& try_step,
+                                const CarryStep& carry, const SteppingOptions& options) {
+  SteppedIncrement out;
+  out.carried = factor;
+  bool carried_any = false;
+  const auto keep = [&](const Trial& t) {
+    carry(t);
+    out.carried = t.next.stage_factor;
+    carried_any = true;
+  };
+  Trial t = try_step(step);
+  // A softening law that reaches its residual value inside the step: carry the step to there,
+  // then the rest as a further step (the laws are linear on each side of the kink).
+  double rest = step;
+  for (int cuts = 0; cuts < kMostKinks && t.status == Trial::Status::carried && t.kink < 1.0;
+       ++cuts) {
+    const Trial to_kink = try_step(t.kink * rest);
+    if (to_kink.status != Trial::Status::carried)
+      break;
+    const double done = to_kink.next.stage_factor - out.carried;
+    keep(to_kink);
+    rest = options.displacement_control ? rest * (1.0 - t.kink) : rest - done;
+    t = try_step(rest);
+  }
+  if (t.status == Trial::Status::carried) {
+    keep(t);
+    return out;
+  }
+  // Bisect the failed step. The bracket's upper end is the nearest load proven to fail (a
+  // certificate proves every step from a fraction of the failed one on).
+  double remaining = rest;       // of this increment, in the units of `step`
+  double failing_step = rest;    // from the state: proven to fail, or the last that failed
+  std::optional<double> proven;  // stage factor of the nearest proof
+  bool aim = false;              // aim at the certificate's bound
+  bool retry = false;            // a numerical failure, then a carried part: try the rest again
+  if (t.status == Trial::Status::collapse) {
+    failing_step *= t.proven_fraction;
+    proven = out.carried + failing_step;
+    aim = t.proven_fraction < 1.0;
+    out.failure = t;
+  }
+  // Proven to fail within the bracket tolerance of the first load, with nothing carried: unstable
+  // under that load (bisecting towards zero load would only bracket round-off).
+  const auto unstable_at_start = [&] {
+    return options.first_load && !carried_any && proven && *proven <= options.bracket_tolerance;
+  };
+  for (int b = 0; b < options.max_bisections && remaining > 0.0 && !unstable_at_start(); ++b) {
+    const double upper = proven ? *proven : out.carried + failing_step;
+    if (std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper))
+      break;
+    const double trial = retry ? remaining : (aim ? kAimAtBound : 0.5) * failing_step;
+    retry = false;
+    const Trial part = try_step(trial);
+    if (part.status == Trial::Status::carried) {
+      keep(part);
+      remaining = trial == remaining ? 0.0 : remaining - trial;
+      if (proven) {
+        failing_step = *proven - out.carried;
+      } else {
+        failing_step -= trial;
+        retry = true;
+      }
+    } else if (part.status == Trial::Status::collapse) {
+      proven = out.carried + trial * part.proven_fraction;
+      failing_step = *proven - out.carried;
+      out.failure = part;
+      aim = false;
+    } else {
+      failing_step = trial;
+      aim = false;
+    }
+  }
+  if (proven) {
+    out.outcome = SteppedIncrement::Outcome::collapse;
+    out.failed = *proven;
+    out.unstable_at_first_load = unstable_at_start();
+  } else if (remaining > 0.0) {
+    out.outcome = SteppedIncrement::Outcome::undecided;
+  }
+  return out;
+}
+
+}  // namespace bimrock

@@ -1,0 +1,28 @@
+#pragma once
+/// @file What a user sets for a plastic analysis (the case file's `analysis:` section), apart
+/// from the expert tuning of the solution strategy, whose defaults are the method's.
+#include <bimrock/analysis/candidates.hpp>
+#include <bimrock/solve/increment_solver.hpp>
+
+namespace bimrock {
+
+struct PlasticOptions {
+  /// A failed increment is bisected until the collapse bracket is this narrow (relative).
+  double bracket_tolerance = 1e-4;
+  /// At most this many bisections per increment.
+  int max_bisections = 40;
+  /// Rounds of "solve, check every yield function, add the violated points" per increment.
+  int max_rounds = 30;
+  /// A yield function counts as violated above this fraction of the stress scale (the largest
+  /// stress component or strength met).
+  double yield_tolerance = 1e-9;
+};
+
+/// Expert tuning of the solution strategy: the candidates of each LCP, and how it is solved.
+/// Tests change it to compare routes; an analysis needs the defaults.
+struct PlasticTuning {
+  CandidateTuning candidates{};
+  SolverTuning solver{};
+};
+
+}  // namespace bimrock

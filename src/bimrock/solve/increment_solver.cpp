@@ -1,0 +1,194 @@
+#include <bimrock/solve/increment_solver.hpp>
+
+#include <memory>
+#include <optional>
+#include <utility>
+
+#include <bimrock/solve/unsymmetric_tangent.hpp>
+#include <bimrock/solve/working_set_lcp.hpp>
+
+namespace bimrock {
+namespace {
+
+// The LCP in the unknowns of the zone, column by column: M = N - C S^-1 Phi (eq. 28) plus the
+// displacement-control term, each column a solve with S (kept: FlexibilityColumns).
+class LcpOnZone final : public LcpColumns {
+ public:
+  LcpOnZone(const YieldSystem& local, const std::vector<YieldPoint>& points, FlexibilityColumns& y,
+            const Eigen::VectorXd& q, const Eigen::VectorXd& gap_old,
+            const Eigen::VectorXd* control, Eigen::VectorXd control_term)
+      : sys_(local),
+        points_(points),
+        y_(y),
+        control_(control),
+        control_term_(std::move(control_term)) {
+    q_ = q;
+    if (gap_old.size() > 0 && gap_old.cwiseAbs().maxCoeff() > 0.0)
+      q_ -= times(gap_old);
+  }
+  // M v with one back-solve (no column of M formed).
+  [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& v) {
+    const Eigen::VectorXd y = y_.combine(sys_, v);
+    Eigen::VectorXd out = sys_.n * v - sys_.c * y;
+    if (control_)
+      out += control_term_ * control_->dot(y);
+    return out;
+  }
+  [[nodiscard]] Eigen::Index size() const override { return sys_.size(); }
+  // The modes of one yield point: at most 2 independent at a joint point (sigma_n, tau), 3 at a
+  // block (its plane stress components).
+  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override {
+    return sys_.rows[static_cast<std::size_t>(row)].point;
+  }
+  [[nodiscard]] int group_rank(Eigen::Index row) const override {
+    const int point = sys_.rows[static_cast<std::size_t>(row)].point;
+    return points_[static_cast<std::size_t>(point)].is_interface() ? 2 : 3;
+  }
+  // Associated flow (C = Phi^T, N symmetric) under load control: M is symmetric (the control
+  // term is not). Checked on first use only.
+  [[nodiscard]] bool symmetric() const override {
+    if (!symmetric_) {
+      const SparseMatrix asymmetry = sys_.c - SparseMatrix(sys_.phi.transpose());
+      const SparseMatrix n_asymmetry = sys_.n - SparseMatrix(sys_.n.transpose());
+      symmetric_ = !control_ && asymmetry.norm() <= 1e-12 * sys_.c.norm() &&
+                   n_asymmetry.norm() <= 1e-12 * sys_.n.norm();
+    }
+    return *symmetric_;
+  }
+  [[nodiscard]] const Eigen::VectorXd& q() const override { return q_; }
+  [[nodiscard]] Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
+    y_.prepare(sys_, cols);
+    Eigen::MatrixXd out(size(), static_cast<Eigen::Index>(cols.size()));
+    for (std::size_t k = 0; k < cols.size(); ++k) {
+      const Eigen::VectorXd& y = y_.column(sys_, cols[k]);
+      auto col = out.col(static_cast<Eigen::Index>(k));
+      col = Eigen::VectorXd(sys_.n.col(cols[k])) - sys_.c * y;
+      if (control_)
+        col += control_term_ * control_->dot(y);
+    }
+    return out;
+  }
+  // The whole matrix, for Lemke (which needs every column).
+  [[nodiscard]] LcpProblem dense() {
+    std::vector<Eigen::Index> all(static_cast<std::size_t>(size()));
+    for (Eigen::Index r = 0; r < size(); ++r)
+      all[static_cast<std::size_t>(r)] = r;
+    return {columns(all), q_};
+  }
+  [[nodiscard]] SplitLcp split(const SparseMatrix& s_lower) const {
+    SplitLcp split{&s_lower, &sys_.c, &sys_.phi, &sys_.n, q_, {}, {}};
+    for (Eigen::Index i = 0; i < size(); ++i) {
+      split.group.push_back(group(i));
+      split.group_rank.push_back(group_rank(i));
+    }
+    return split;
+  }
+
+ private:
+  const YieldSystem& sys_;
+  const std::vector<YieldPoint>& points_;
+  FlexibilityColumns& y_;
+  const Eigen::VectorXd* control_;
+  Eigen::VectorXd control_term_;
+  Eigen::VectorXd q_;
+  mutable std::optional<bool> symmetric_;
+};
+
+bool decided(const LcpResult& r) {
+  return r.status == LcpStatus::solved || r.status == LcpStatus::no_solution;
+}
+
+}  // namespace
+
+IncrementSolver::IncrementSolver(const Model& model, SparseCholesky& k, const SparseMatrix& k_lower,
+                                 const SolverTuning& tuning)
+    : tuning_(tuning),
+      zones_(model, k, k_lower, tuning.zones),
+      active_set_(ActiveSetOptions{.max_iterations = tuning.active_set_iterations,
+                                   .interrupt_after = tuning.interrupt_after}) {}
+
+IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
+                                         bool stop_unsolved) {
+  using Outcome = IncrementSolution::Outcome;
+  IncrementSolution out;
+  const CondensedStiffness& stiffness = zones_.stiffness();
+  FlexibilityColumns& columns = zones_.columns();
+  const double columns_before = columns.seconds();
+  const YieldSystem local = stiffness.local(lcp.rows);
+  const Eigen::VectorXd local_control =
+      lcp.control ? stiffness.local(*lcp.control) : Eigen::VectorXd();
+  LcpOnZone on_zone(local, lcp.points, columns, lcp.q, lcp.gap_old,
+                    lcp.control ? &local_control : nullptr, lcp.control_term);
+  const Eigen::Index m = on_zone.size();
+  const Eigen::VectorXd* warm =
+      lcp.warm.size() > 0 && lcp.warm.maxCoeff() > 0.0 ? &lcp.warm : nullptr;
+  const auto finish = [&](Outcome outcome, const LcpResult& r) {
+    out.outcome = outcome;
+    if (outcome == Outcome::no_solution && r.ray.size() == m) {
+      out.ray = r.ray;
+      // Under load control q moves with the step and M does not: the ray proves every step
+      // from some fraction of this one on (a tighter upper bound for the collapse bracket).
+      if (lcp.load_part.size() == m)
+        out.proven_fraction = certified_from(on_zone.q(), lcp.load_part, r.ray);
+    } else if (outcome != Outcome::no_solution) {
+      out.z = r.z;
+    }
+    out.columns_seconds = columns.seconds() - columns_before;
+    return out;
+  };
+  LcpResult r;
+  out.on_tangent = tuning_.active_set && tuning_.reduced_tangent_rows >= 0 && !lcp.control &&
+                   lcp.warm.sum() >= tuning_.reduced_tangent_rows;
+  if (out.on_tangent) {
+    // Many rows active: the equations of each active set on the sparse reduced tangent. It
+    // reads no column of K^-1 Phi: those kept go, to make room for its factor.
+    columns.clear();
+    const SplitLcp split = on_zone.split(stiffness.lower());
+    // Symmetric (associated flow): Cholesky, with the kept factor's updates; else LU.
+    std::unique_ptr<ActiveSetEquations> equations;
+    if (on_zone.symmetric())
+      equations =
+          std::make_unique<ReducedTangentEquations>(split, stiffness.factor(), zones_.tangent());
+    else
+      equations = std::make_unique<UnsymmetricTangentEquations>(split, stiffness.factor());
+    r = active_set_.solve(*equations, warm, interrupt);
+    out.active_set_iterations += r.steps;
+    out.tangent_factorizations += equations->factorizations();
+    const bool unsolved = r.z.size() == m && (r.status == LcpStatus::iteration_limit ||
+                                              r.status == LcpStatus::numerical_failure);
+    if (r.status == LcpStatus::interrupted || (stop_unsolved && unsolved))
+      return finish(Outcome::interrupted, r);
+    if (!decided(r) && m > tuning_.dense_fallback_rows)
+      return finish(Outcome::undecided, r);  // too large for the dense routes
+  }
+  if (tuning_.active_set && !decided(r)) {
+    r = active_set_.solve(on_zone, warm);
+    out.active_set_iterations += r.steps;
+  }
+  if (tuning_.active_set && !decided(r)) {
+    // Lemke on the rows that were violated or active (and those its solution violates): the
+    // columns of the other rows are never formed.
+    std::vector<Eigen::Index> initial;
+    for (Eigen::Index i = 0; i < m; ++i)
+      if ((warm && (*warm)(i) > 0.0) || (r.z.size() == m && r.z(i) > 0.0))
+        initial.push_back(i);
+    r = solve_on_working_set(on_zone, initial, lemke_);
+    out.pivots += r.steps;
+  }
+  if (!decided(r)) {
+    // Lemke on the whole matrix, then the complete method: Lemke decides an LCP only for
+    // copositive-plus M, and on the degenerate LCPs of cohesionless joints and of
+    // non-associated flow it can end on a ray that proves nothing. Branch and bound on the
+    // pairs decides every LCP: a solution, or a proof that there is none.
+    const LcpProblem dense = on_zone.dense();
+    r = lemke_.solve(dense);
+    out.pivots += r.steps;
+    if (!decided(r))
+      r = complete_.solve(dense);
+  }
+  if (r.status == LcpStatus::solved)
+    return finish(Outcome::solved, r);
+  return finish(r.status == LcpStatus::no_solution ? Outcome::no_solution : Outcome::undecided, r);
+}
+
+}  // namespace bimrock

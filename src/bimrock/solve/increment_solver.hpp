@@ -1,0 +1,102 @@
+#pragma once
+/// @file The one boundary of the solution strategy: IncrementSolver takes a round's increment
+/// LCP (increment_lcp.hpp) and returns its solution, a proof that it has none, or why it could
+/// not decide. Behind it (docs/solution-strategy.md):
+/// - the stiffness the LCP is solved on: K, or K condensed onto a zone (stiffness_zones.hpp);
+/// - the primal-dual active-set method, warm-started, on the sparse reduced tangent when many
+///   rows are active (Cholesky for associated flow, LU otherwise), else on the dense active
+///   block (only the columns of active rows are formed);
+/// - where it fails, Lemke on a working set of rows, then on the whole matrix;
+/// - last, branch and bound on the complementary pairs, which decides every LCP.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <bimrock/model/model.hpp>
+#include <bimrock/solve/active_set_lcp.hpp>
+#include <bimrock/solve/branch_and_bound_lcp.hpp>
+#include <bimrock/solve/increment_lcp.hpp>
+#include <bimrock/solve/lemke.hpp>
+#include <bimrock/solve/stiffness_zones.hpp>
+
+namespace bimrock {
+
+/// Expert tuning of the solution strategy; the defaults are the method's, and no analysis needs
+/// others (tests change them to compare routes).
+struct SolverTuning {
+  /// Solve each LCP by the active-set method first, Lemke only where it fails (false: Lemke
+  /// always; the answers agree, only the time differs).
+  bool active_set = true;
+  /// The most iterations of the active-set method on one LCP: of the block rule, and again as
+  /// many of projected Newton.
+  int active_set_iterations = 50;
+  /// The reduced tangent serves LCPs from this many rows expected active (the warm start's);
+  /// below it the dense active block is cheaper. -1: never.
+  int reduced_tangent_rows = 300;
+  /// Where the tangent route fails, the dense routes take over on LCPs up to this many rows; a
+  /// larger one is left undecided (Lemke is O(m^3), and the dense block needs a back-solve per
+  /// active row).
+  int dense_fallback_rows = 4000;
+  /// On the reduced tangent, after this many steps of projected Newton each iterate is shown to
+  /// the caller's interrupt (0: never).
+  int interrupt_after = 3;
+  ZoneTuning zones{};
+};
+
+struct IncrementSolution {
+  enum class Outcome {
+    solved,       ///< z solves the LCP (checked on its own conditions)
+    no_solution,  ///< proven: no z exists (a certificate, or an exhausted complete search)
+    interrupted,  ///< the caller's interrupt ended the solve, or it stalled (see solve())
+    undecided     ///< neither solved nor proven unsolvable (round-off near a limit load)
+  };
+  Outcome outcome = Outcome::undecided;
+  /// solved: the multipliers (an opening row's is its total gap); interrupted: the last iterate.
+  Eigen::VectorXd z;
+  /// no_solution, where a certificate was found: the mechanism's multipliers (>= 0, max 1).
+  Eigen::VectorXd ray;
+  /// no_solution under load control: the least fraction of the step the certificate proves to
+  /// fail (1 without one).
+  double proven_fraction = 1.0;
+  bool on_tangent = false;  ///< the active-set method ran on the reduced tangent
+  int active_set_iterations = 0;
+  int tangent_factorizations = 0;
+  int pivots = 0;                ///< Lemke's
+  double columns_seconds = 0.0;  ///< of the time, forming columns K^-1 phi
+};
+
+class IncrementSolver {
+ public:
+  /// The iterate of the active-set method on the reduced tangent (z in the LCP's rows); true
+  /// ends the solve.
+  using Interrupt = ActiveSetLcp::Interrupt;
+
+  /// `k` is K's factor (reordered when zones change), `k_lower` its lower triangle; both must
+  /// outlive this.
+  IncrementSolver(const Model& model, SparseCholesky& k, const SparseMatrix& k_lower,
+                  const SolverTuning& tuning);
+
+  /// Makes the LCPs hold every flagged block (per block of the model).
+  void hold(const std::vector<char>& needed_blocks) { zones_.hold(needed_blocks); }
+  /// Whether a yield point's rows can join the LCP at no extra cost (the zone covers it).
+  [[nodiscard]] bool covers(const YieldPoint& point) const { return zones_.covers(point); }
+
+  /// Solves a round's LCP; hold() must cover every block its rows touch. On the reduced tangent,
+  /// `interrupt` sees the iterates, and with `stop_unsolved` an iterate that ends unsolved there
+  /// (at the iteration limit, or where no step lowers the objective) is returned as interrupted
+  /// instead of going on with the dense routes.
+  [[nodiscard]] IncrementSolution solve(const IncrementLcp& lcp, const Interrupt* interrupt,
+                                        bool stop_unsolved);
+
+  [[nodiscard]] const SolverTuning& tuning() const { return tuning_; }
+  [[nodiscard]] ZoneStatistics zone_statistics() const { return zones_.statistics(); }
+
+ private:
+  SolverTuning tuning_;
+  StiffnessZones zones_;
+  ActiveSetLcp active_set_;
+  Lemke lemke_;
+  BranchAndBoundLcp complete_;
+};
+
+}  // namespace bimrock

@@ -1,0 +1,161 @@
+// Load stepping (analysis/load_stepping.hpp) on stand-in structures whose answers are known by
+// construction: a trial carries a step while the stage factor it reaches stays at or below a
+// collapse factor F set by the test, and fails past it. The collapse bracket must hold F and be
+// as narrow as the tolerance asks; parts carried must add up to the increment; a step that fails
+// only numerically must never be taken for a collapse.
+#include <cmath>
+#include <functional>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <bimrock/analysis/load_stepping.hpp>
+
+namespace bimrock {
+namespace {
+
+constexpr double kCollapse = 0.6137;  // F: the stand-in structure's collapse factor
+
+// A stand-in structure: its state is the stage factor carried, and `answer` decides each trial.
+struct Structure {
+  double factor = 0.0;
+  std::vector<double> tried{};    // the steps tried, in order
+  std::vector<double> carried{};  // the factor after each carried part
+  std::function<Trial(double from, double step)> answer{};
+
+  SteppedIncrement step(double step, const SteppingOptions& options = {}) {
+    const TryStep try_step = [&](double s) {
+      tried.push_back(s);
+      return answer(factor, s);
+    };
+    const CarryStep carry = [&](const Trial& t) {
+      factor = t.next.stage_factor;
+      carried.push_back(factor);
+    };
+    return step_increment(step, factor, try_step, carry, options);
+  }
+};
+
+Trial carried_to(double factor) {
+  Trial t;
+  t.status = Trial::Status::carried;
+  t.next.stage_factor = factor;
+  return t;
+}
+
+Trial collapsed(double proven_fraction = 1.0) {
+  Trial t;
+  t.status = Trial::Status::collapse;
+  t.proven_fraction = proven_fraction;
+  return t;
+}
+
+Trial failed() {
+  return Trial{};  // Status::failed: no solution found, none proven absent
+}
+
+// Carries up to F, proves failure of any step beyond it (a proof of the whole step only).
+Trial up_to_collapse(double from, double step) {
+  return from + step <= kCollapse ? carried_to(from + step) : collapsed();
+}
+
+TEST(LoadStepping, CarriesAWholeIncrementBelowTheCollapse) {
+  Structure s{.answer = up_to_collapse};
+  const SteppedIncrement out = s.step(0.25);
+  EXPECT_EQ(out.outcome, SteppedIncrement::Outcome::carried);
+  EXPECT_DOUBLE_EQ(out.carried, 0.25);
+  EXPECT_EQ(s.tried.size(), 1u);
+}
+
+TEST(LoadStepping, BracketsTheCollapseToTheTolerance) {
+  Structure s{.answer = up_to_collapse};
+  s.factor = 0.5;
+  const SteppingOptions options{.bracket_tolerance = 1e-4};
+  const SteppedIncrement out = s.step(0.25, options);
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_LE(out.carried, kCollapse);
+  EXPECT_GT(out.failed, kCollapse);
+  EXPECT_LE(out.failed - out.carried, options.bracket_tolerance * out.failed);
+  EXPECT_DOUBLE_EQ(s.factor, out.carried);  // the state is the last part carried
+  for (std::size_t i = 1; i < s.carried.size(); ++i)
+    EXPECT_GT(s.carried[i], s.carried[i - 1]);
+  EXPECT_FALSE(out.unstable_at_first_load);
+}
+
+TEST(LoadStepping, AimsAtACertificatesBoundAndNeedsFewerTrialsThanHalving) {
+  // A certificate proves every step that reaches F (plus a hair): the bracket's upper end is F
+  // at once, and the trials aim near it.
+  Structure proving{.answer = [](double from, double step) {
+    const double reach = from + step;
+    if (reach <= kCollapse)
+      return carried_to(reach);
+    return collapsed((kCollapse * (1.0 + 1e-9) - from) / step);
+  }};
+  proving.factor = 0.5;
+  const SteppedIncrement out = proving.step(0.25);
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_NEAR(out.failed, kCollapse, 1e-8);
+  EXPECT_LE(out.carried, kCollapse);
+  EXPECT_LE(out.failed - out.carried, 1e-4 * out.failed);
+
+  Structure halving{.answer = up_to_collapse};
+  halving.factor = 0.5;
+  (void)halving.step(0.25);
+  EXPECT_LT(proving.tried.size(), halving.tried.size());
+}
+
+TEST(LoadStepping, ANumericalFailureIsCutAndTheRestCarriedNotTakenForACollapse) {
+  // Steps longer than 0.1 fail numerically; everything below F carries.
+  Structure s{.answer = [](double from, double step) {
+    if (step > 0.1 + 1e-15)
+      return failed();
+    return up_to_collapse(from, step);
+  }};
+  const SteppedIncrement out = s.step(0.25);
+  EXPECT_EQ(out.outcome, SteppedIncrement::Outcome::carried);
+  EXPECT_NEAR(s.factor, 0.25, 1e-15);  // the parts add up to the increment
+  EXPECT_GE(s.carried.size(), 3u);
+}
+
+TEST(LoadStepping, FailuresWithoutProofNearTheCollapseLeaveItUndecided) {
+  Structure s{.answer = [](double from, double step) {
+    return from + step <= kCollapse ? carried_to(from + step) : failed();
+  }};
+  s.factor = 0.5;
+  const SteppedIncrement out = s.step(0.25);
+  EXPECT_EQ(out.outcome, SteppedIncrement::Outcome::undecided);
+  EXPECT_LE(out.carried, kCollapse);
+  EXPECT_GT(out.carried, kCollapse * (1.0 - 1e-3));  // carried what could be
+}
+
+TEST(LoadStepping, AKinkSplitsTheStepAtTheKink) {
+  // The first trial of the step reaches a softening law's kink at a quarter of it.
+  Structure s{.answer = [](double from, double step) {
+    Trial t = carried_to(from + step);
+    if (from < 0.1 && from + step > 0.1 + 1e-12)
+      t.kink = (0.1 - from) / step;
+    return t;
+  }};
+  const SteppedIncrement out = s.step(0.4);
+  EXPECT_EQ(out.outcome, SteppedIncrement::Outcome::carried);
+  ASSERT_EQ(s.carried.size(), 2u);
+  EXPECT_NEAR(s.carried[0], 0.1, 1e-15);
+  EXPECT_NEAR(s.carried[1], 0.4, 1e-15);
+}
+
+TEST(LoadStepping, AFailureProvenAtTheFirstLoadIsAnInstabilityNotABracket) {
+  // Every step fails, proven from a billionth of the load on.
+  const auto unstable = [](double from, double step) { return collapsed((1e-9 - from) / step); };
+  Structure first{.answer = unstable};
+  const SteppedIncrement out = first.step(0.1, {.first_load = true});
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_TRUE(out.unstable_at_first_load);
+  EXPECT_TRUE(first.carried.empty());
+  EXPECT_EQ(first.tried.size(), 1u);  // no bisection towards zero load
+  // Not the first load (something was carried before): the same failure is a bracket.
+  Structure later{.answer = unstable};
+  EXPECT_FALSE(later.step(0.1, {.first_load = false}).unstable_at_first_load);
+}
+
+}  // namespace
+}  // namespace bimrock
