@@ -1,4 +1,4 @@
-// Verification: the LCPs solved on K condensed statically onto the plastic zone give the same
+// Regression: the LCPs solved on K condensed statically onto the plastic zone give the same
 // analysis as on K itself.
 //
 // Source of the expected numbers: a second method on the same model. The abutment model of

@@ -1,4 +1,4 @@
-// Verification: the candidate rows of an increment change its cost, not its answer.
+// Regression: the candidate rows of an increment change its cost, not its answer.
 //
 // Source of the expected numbers: a second method on the same model. The abutment model of
 // `bimrock bench` (a jointed mass of 0.2 m blocks, Mohr-Coulomb joints with associated flow, a

@@ -1,4 +1,4 @@
-// Verification: the two routes of the active-set method give the same analysis.
+// Regression: the two routes of the active-set method give the same analysis.
 //
 // Source of the expected numbers: a second method on the same model. The abutment model of
 // `bimrock bench` (a jointed mass of 0.2 m blocks, Mohr-Coulomb joints with associated flow,

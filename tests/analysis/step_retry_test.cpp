@@ -1,4 +1,4 @@
-// Verification: a step that fails without proving a collapse is cut, and the rest of its
+// Regression: a step that fails without proving a collapse is cut, and the rest of its
 // increment is tried again once a part has carried; the analysis goes on to the same collapse.
 //
 // Source of the expected numbers: a second method on the same model. The abutment model of
