@@ -1,5 +1,5 @@
 #pragma once
-// What the verification tests share that run one plastic analysis two ways (a second method):
+// What the regression tests share that run one plastic analysis two ways (another route):
 // the model, and the check that both runs give the same collapse bracket and, up to the first
 // step the bisections cut differently, the same monitor displacements.
 #include <algorithm>
