@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <set>
 #include <stdexcept>
 #include <utility>
@@ -285,8 +283,7 @@ void keep_free_rows_within_group_rank(const ActiveSetEquations& problem, const E
 // rank, or a singular block that is no mechanism, is damped (a proximal step), which keeps the
 // descent. `at` is the start, z >= 0 measured by problem.result().
 LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& options,
-                           LcpResult at, int iteration, bool trace,
-                           const ActiveSetLcp::Interrupt* interrupt) {
+                           LcpResult at, int iteration, const ActiveSetLcp::Interrupt* interrupt) {
   const Eigen::Index n = problem.size();
   const Eigen::VectorXd& q = problem.q();
   Eigen::VectorXd z = at.z;
@@ -369,10 +366,6 @@ LcpResult projected_newton(ActiveSetEquations& problem, const ActiveSetOptions& 
     if (taken == 1.0)
       damp_all = damp_all * 0.1 < kSmallestDamping ? 0.0 : damp_all * 0.1;
     settled = taken == 1.0 && step.z.minCoeff() >= 0.0;
-    if (trace)
-      std::fprintf(stderr, "    newton %d |F| %zu damped %td step %g objective %.12g worst %g\n",
-                   iteration, rows.size(), (damping.factor.array() > 0.0).count(), taken, f,
-                   at.residuals.worst_relative());
     if (taken == 0.0) {
       // No step lowers the objective: before failing, the caller may find that the iterate
       // violates rows the LCP lacks, and solve a larger one instead.
@@ -454,7 +447,6 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       }
     }
   };
-  const bool trace = std::getenv("BIMROCK_DEBUG_ACTIVE_SET") != nullptr;  // per-iteration lines
   // Where the block rule does not converge, a symmetric problem goes on with projected Newton,
   // which cannot cycle. It starts from the block rule's iterate, projected on z >= 0, of least
   // objective (z = 0 has 0): near a limit load the last one can be far off (a nearly singular
@@ -469,7 +461,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
       return solved_or(status, iteration);
     if (!best_measured)
       best = problem.result(LcpStatus::solved, best.z, iteration);
-    return projected_newton(problem, options_, best, iteration, trace, interrupt);
+    return projected_newton(problem, options_, best, iteration, interrupt);
   };
   Eigen::Index fewest_violated = n + 1;  // the best count of violated rows so far
   int stalled = 0;                       // iterations since it was last lowered
@@ -576,15 +568,6 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
     bool changed = false;
     for (Eigen::Index i = 0; i < n; ++i)
       changed = changed || next[static_cast<std::size_t>(i)] != active[static_cast<std::size_t>(i)];
-    if (trace) {
-      int added = 0, dropped = 0;
-      for (Eigen::Index i = 0; i < n; ++i) {
-        added += next[static_cast<std::size_t>(i)] && !active[static_cast<std::size_t>(i)];
-        dropped += !next[static_cast<std::size_t>(i)] && active[static_cast<std::size_t>(i)];
-      }
-      std::fprintf(stderr, "    it %d |A| %zu +%d -%d violated %td min z %g min w %g\n", iteration,
-                   rows.size(), added, dropped, violated, z.minCoeff(), w.minCoeff());
-    }
     last_active = active;
     last_w = w;
     if (newton && stalled >= options_.stall_iterations)
