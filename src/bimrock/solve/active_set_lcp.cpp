@@ -240,8 +240,7 @@ constexpr double kSmallestDamping = 1e-6;
 // of its free rows) every violated row of a group whose positive rows fill its rank joins too,
 // damped: the solution may need it in place of one of them, which the limited steps cannot
 // reach (on random grouped problems they stalled so). Damping the surplus rows of every group
-// instead cut the steps to 1/8 near a collapse: 10^4 blocks 57 -> 52 tangent factorizations,
-// 979 blocks 53 -> 38.
+// at every step instead would cut the steps short near a collapse, for more factorizations.
 void keep_free_rows_within_group_rank(const ActiveSetEquations& problem, const Eigen::VectorXd& z,
                                       const Eigen::VectorXd& w, bool settled,
                                       std::vector<Eigen::Index>& rows) {
@@ -450,7 +449,7 @@ LcpResult ActiveSetLcp::solve(ActiveSetEquations& problem, const Eigen::VectorXd
   // Where the block rule does not converge, a symmetric problem goes on with projected Newton,
   // which cannot cycle. It starts from the block rule's iterate, projected on z >= 0, of least
   // objective (z = 0 has 0): near a limit load the last one can be far off (a nearly singular
-  // block gave it multipliers of -3e6 at 10^4 blocks).
+  // block can give it huge negative multipliers).
   const bool newton = options_.projected_newton && problem.symmetric();
   LcpResult best = newton ? problem.result(LcpStatus::solved, Eigen::VectorXd::Zero(n), 0)
                           : LcpResult();  // measured: no back-solve for z = 0

@@ -117,9 +117,8 @@ int ReducedTangentEquations::mode(Eigen::Index row) const {
 namespace {
 
 // S^-1 B, kSolveChunk columns at a time: a solve reads the whole factor once whatever the
-// number of its columns, but past a few dozen the right-hand sides fall out of cache
-// (BM_SolveColumns: at 10^4 blocks 16.7 ms for one column, 2.6 ms per column for 32, 5.9 for
-// 128).
+// number of its columns, but past a few dozen the right-hand sides fall out of cache (the
+// bench's BM_SolveColumns measures a column's cost by their number).
 Eigen::MatrixXd solve_in_chunks(const SparseCholesky& s, const CholmodMatrix& b) {
   Eigen::MatrixXd out(b.rows(), b.cols());
   for (Eigen::Index c = 0; c < b.cols(); c += kSolveChunk) {
@@ -237,10 +236,9 @@ std::optional<ReducedTangentEquations::Update> ReducedTangentEquations::update_f
   // Worth it while the back-solves for the columns not kept cost less than half a factorization
   // in CHOLMOD's flop count (a solve: ~4 flops per non-zero of the factor), and the columns
   // kept take at most a quarter of the factor's memory (or 32 of them: a small factor is
-  // cheap). Measured on the 10^4-block abutment (LCP phase, one run each): these budgets 65 s
-  // (86 factorizations, 38 s of them, and 11 s of tangent solves); twice both 69 s (67: 30 s,
-  // 21 s); half the flops 67 s (44 s, 8 s). In the analysis a new column costs ~5 ms, more
-  // than the count says (few columns per update solve less well together).
+  // cheap). Larger budgets trade factorizations for more tangent solves, smaller ones the
+  // reverse: in the analysis a new column costs more than its flop count says (few columns per
+  // update solve less well together).
   const double factor_entries = static_cast<double>(tangent_.cholesky.factor_nonzeros());
   const double affordable = limits_.new_columns >= 0.0
                                 ? limits_.new_columns

@@ -56,16 +56,15 @@ struct SparseCholesky::Impl {
   cholmod_common common{};
   cholmod_factor* factor = nullptr;
   // A supernodal factor in a fill-reducing order takes tril(P A P^T); from a lower triangle
-  // CHOLMOD builds it with two transposes per factorization (cholmod_factorize_p), 14% of the
-  // factorizations' main-thread time in the plastic bench.
+  // CHOLMOD builds it with two transposes per factorization (cholmod_factorize_p), a sizeable
+  // part of a factorization's time on the main thread.
   // From the second factorization of one analysis on, the matrix is scattered into that form
   // here, in one pass, and factorized as if its order were natural.
   std::int64_t factorizations_since_analysis = 0;
   // analyze_last() builds that form at once and analyzes it in natural order: the analysis
-  // costs the same (CHOLMOD's four transposes give way to the permutation: 41 ms for K at 10^4
-  // blocks either way), and the first factorization reads it without CHOLMOD's transposes,
-  // then frees it (K and a region's S are factorized once per analysis). The plastic bench's
-  // condensations at 10^4 blocks: 1.30 -> 1.24 s.
+  // costs the same (CHOLMOD's four transposes give way to the permutation), and the first
+  // factorization reads it without CHOLMOD's transposes, then frees it (K and a region's S are
+  // factorized once per analysis).
   std::vector<std::int64_t> permuted_p;  // tril(P A P^T): column starts, rows, values
   std::vector<std::int64_t> permuted_i;
   std::vector<double> permuted_x;
@@ -268,9 +267,8 @@ void SparseCholesky::analyze_last(const CholmodMatrix& lower, int block_size,
   // Groups: level 0; then per level its blocks coupled to no lower one, then those coupled to
   // one. Each group keeps the relative order of the whole graph's own fill-reducing order: its
   // separators, restricted to a group, still separate it once the higher levels come last.
-  // Ordering each group on its own graph instead cut the ring-shaped groups anew and ignored
-  // their fill into the zones ordered after them: the last condensation of the 10^4-block bench
-  // cost 2.65 times the flops of K's own factorization, 1.93 times this way.
+  // Ordering each group on its own graph instead would cut the ring-shaped groups anew and
+  // ignore their fill into the zones ordered after them: more flops in every condensation.
   std::vector<std::vector<std::int64_t>> groups(static_cast<std::size_t>(2 * top + 1));
   for (std::int64_t b : block_order(pattern)) {
     const auto i = static_cast<std::size_t>(b);
