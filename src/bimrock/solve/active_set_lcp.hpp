@@ -21,6 +21,9 @@
 /// and a proximal damping of singular blocks): it cannot cycle. A non-symmetric M goes on with
 /// Murty's rule after a cycle. Otherwise it answers solved, or iteration_limit /
 /// numerical_failure (a result that fails the check): the caller then falls back to Lemke.
+/// The block rule is active_set_lcp.cpp; projected Newton, the equations of a problem given by
+/// its columns and the certificate of a singular block have files of their own
+/// (projected_newton.hpp, column_equations.hpp, kernel_certificate.hpp).
 #include <functional>
 #include <limits>
 #include <utility>
