@@ -10,7 +10,9 @@
 
 namespace bimrock {
 
-/// The LCP (q, M). Dense for now: the candidate rows of one increment are few.
+/// The LCP (q, M), dense: the form the pivoting methods (Lemke, branch and bound) need, and that
+/// of tests and recorded problems. The active-set methods see an increment's M column by column
+/// (LcpColumns) or in its sparse parts (ActiveSetEquations) instead, never formed whole.
 struct LcpProblem {
   Eigen::MatrixXd m;  ///< n x n; symmetric positive semi-definite for associated flow
   Eigen::VectorXd q;  ///< n

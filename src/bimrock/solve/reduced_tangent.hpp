@@ -18,7 +18,7 @@
 /// route). The result is measured with K's own factor (x = K^-1 Phi z, one back-solve),
 /// independently of the tangent, unless the caller asks only for the tangent's own. An active set
 /// whose tangent differs from the factored one in a few groups is solved through that factor
-/// instead (Woodbury, see update_from_kept).
+/// instead (Woodbury, tangent_factor.hpp).
 #include <map>
 #include <optional>
 #include <utility>
@@ -29,49 +29,9 @@
 
 #include <bimrock/solve/sparse_cholesky.hpp>
 #include <bimrock/solve/split_lcp_equations.hpp>
+#include <bimrock/solve/tangent_factor.hpp>
 
 namespace bimrock {
-
-using SparseColumn = Eigen::SparseVector<double, Eigen::ColMajor, std::int64_t>;
-
-/// One group's part of a reduced tangent, Phi_g N_gg^-1 C_g: the columns of Phi of its active
-/// rows and their (damped) N_gg. A kept factor is described by its terms, so that a later LCP,
-/// whose rows are numbered otherwise, can tell how its own tangent differs from it.
-struct TangentTerm {
-  Eigen::Index group = 0;  ///< SplitLcp::group: the same yield point in every LCP
-  std::vector<int> modes;  ///< each active row's place among the rows of its group
-  std::vector<SparseColumn> phi;
-  Eigen::MatrixXd n_local;
-};
-
-/// The factor of the reduced tangent, kept from one LCP to the next: its symbolic analysis
-/// serves every active set, and its numeric factor the next LCPs whose tangents are the same
-/// or differ from it in a few groups (each candidate round starts from the active set the
-/// last one ended with, each increment from the last increment's).
-struct TangentFactor {
-  SparseCholesky cholesky;
-  /// The last tangent formed (lower triangle): K's pattern, its values overwritten each time.
-  CholmodMatrix matrix;
-  /// The tangent `cholesky` holds the factor of, as K minus these terms (empty: none).
-  std::optional<std::vector<TangentTerm>> terms;
-  /// S^-1 phi of the rows updates used, by group and mode (with the phi they were solved
-  /// for), kept while the factor is: the rows an update changes are much the same from one
-  /// active-set iteration to the next.
-  struct Column {
-    SparseColumn phi;
-    Eigen::VectorXd solved;
-  };
-  std::map<std::pair<Eigen::Index, int>, Column> columns;
-};
-
-/// How much the tangent of a solve may differ from the one whose factor is kept and still be
-/// solved through it (a low-rank update) instead of factorized: rows whose terms differ, and
-/// back-solves for the columns not kept from earlier updates. Negative: chosen from the
-/// factor's memory and its cost against a back-solve's.
-struct TangentUpdateLimits {
-  Eigen::Index rows = -1;
-  double new_columns = -1.0;
-};
 
 class ReducedTangentEquations final : public SplitLcpEquations {
  public:
@@ -97,13 +57,6 @@ class ReducedTangentEquations final : public SplitLcpEquations {
   [[nodiscard]] int updated_factors() const { return updated_; }
 
  private:
-  struct Update;
-  /// The solve of the new tangent through the kept factor of another one when they differ in
-  /// few groups (S_new = S_kept - P D P^T, Woodbury), or nothing if they differ in too many or
-  /// the new one is not positive definite.
-  [[nodiscard]] std::optional<Update> update_from_kept(const std::vector<TangentTerm>& terms);
-  [[nodiscard]] Eigen::VectorXd solve_tangent(const Eigen::VectorXd& rhs,
-                                              const Update* update) const;
   /// solve(), through a low-rank update of the kept factor if `may_update`; nothing if that
   /// was not accurate enough.
   [[nodiscard]] std::optional<Solution> solve_on(const std::vector<Eigen::Index>& active,

@@ -1,7 +1,9 @@
 #pragma once
 /// @file Sparse Cholesky factorization of the stiffness K with CHOLMOD (64-bit indices).
 /// Pattern first (analyze: fill-reducing ordering, symbolic factor), values second (factorize),
-/// so one factor object serves every load increment of an analysis.
+/// so one factor object serves every load increment of an analysis. Its parts, one file each:
+/// sparse_cholesky.cpp (analysis, factorization, solves), block_ordering.cpp, zone_ordering.cpp
+/// and zone_schur_complement.cpp, over the state in sparse_cholesky_impl.hpp.
 #include <cstdint>
 #include <memory>
 #include <vector>
