@@ -1,257 +1,32 @@
-// The case-file reader: one small function per section, each knowing its keys (from the one
-// table kKeys below), defaults, units and syntax checks. Everything that needs the whole model
-// (convexity, overlaps, material names, positive stiffness) is left to build_model().
+// The case-file reader: the document (one YAML document, `schema: 1` first), then one small
+// function per section (below, or in case_sections.hpp), each knowing its keys (from the one
+// table kKeys, case_keys.cpp), defaults, units and syntax checks. Everything that needs the whole
+// model (convexity, overlaps, material names, positive stiffness) is left to build_model().
 #include <bimrock/io/case_reader.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <initializer_list>
 #include <map>
 #include <optional>
 #include <set>
 #include <sstream>
+#include <string>
+#include <system_error>
 #include <utility>
+#include <vector>
 
 #include <fmt/core.h>
 
+#include <bimrock/io/case_sections.hpp>
 #include <bimrock/io/gmsh_mesh.hpp>
 #include <bimrock/io/yaml_value.hpp>
 
-namespace bimrock {
+namespace bimrock::case_file {
 namespace {
 
-using yaml::Entry;
-using yaml::Map;
-using yaml::Value;
-
 constexpr int kSchemaVersion = 1;
-
-// Every key of schema 1: the reader validates each section against it and
-// tests/io/case_file_docs_test.cpp checks docs/case-file.md documents each path.
-constexpr std::array kKeys = {
-    CaseKey{"", "schema", true},
-    CaseKey{"", "title"},
-    CaseKey{"", "analysis"},
-    CaseKey{"", "materials", true},
-    CaseKey{"", "joint_materials"},
-    CaseKey{"", "blocks"},
-    CaseKey{"", "domain"},
-    CaseKey{"", "mesh"},
-    CaseKey{"", "joints"},
-    CaseKey{"", "supports"},
-    CaseKey{"", "loads"},
-    CaseKey{"", "monitors"},
-    CaseKey{"", "output"},
-    CaseKey{"", "stages"},
-    CaseKey{"", "limits"},
-    CaseKey{"analysis", "plane"},
-    CaseKey{"analysis", "thickness"},
-    CaseKey{"analysis", "penalty_factor"},
-    CaseKey{"analysis", "bracket_tolerance"},
-    CaseKey{"analysis", "max_bisections"},
-    CaseKey{"analysis", "max_rounds"},
-    CaseKey{"analysis", "yield_tolerance"},
-    CaseKey{"materials.<name>", "E", true},
-    CaseKey{"materials.<name>", "nu", true},
-    CaseKey{"materials.<name>", "unit_weight"},
-    CaseKey{"materials.<name>", "strength"},
-    CaseKey{"materials.<name>.strength", "criterion"},
-    CaseKey{"materials.<name>.strength", "cohesion", true},
-    CaseKey{"materials.<name>.strength", "friction"},
-    CaseKey{"materials.<name>.strength", "dilation"},
-    CaseKey{"materials.<name>.strength", "planes"},
-    CaseKey{"joint_materials.<name>", "kn"},
-    CaseKey{"joint_materials.<name>", "ks"},
-    CaseKey{"joint_materials.<name>", "E"},
-    CaseKey{"joint_materials.<name>", "nu"},
-    CaseKey{"joint_materials.<name>", "h"},
-    CaseKey{"joint_materials.<name>", "continuum"},
-    CaseKey{"joint_materials.<name>", "penalty_factor"},
-    CaseKey{"joint_materials.<name>", "integration"},
-    CaseKey{"joint_materials.<name>", "subdivisions"},
-    CaseKey{"joint_materials.<name>", "cohesion"},
-    CaseKey{"joint_materials.<name>", "friction"},
-    CaseKey{"joint_materials.<name>", "dilation"},
-    CaseKey{"joint_materials.<name>", "tensile_strength"},
-    CaseKey{"joint_materials.<name>", "residual_cohesion"},
-    CaseKey{"joint_materials.<name>", "residual_friction"},
-    CaseKey{"joint_materials.<name>", "residual_tensile_strength"},
-    CaseKey{"joint_materials.<name>", "softening_slip"},
-    CaseKey{"joint_materials.<name>", "softening_opening"},
-    CaseKey{"blocks[]", "material", true},
-    CaseKey{"blocks[]", "vertices", true},
-    CaseKey{"domain", "outline", true},
-    CaseKey{"domain", "holes"},
-    CaseKey{"domain", "zones"},
-    CaseKey{"domain", "material", true},
-    CaseKey{"domain", "joint_sets"},
-    CaseKey{"domain", "joints"},
-    CaseKey{"domain", "intact"},
-    CaseKey{"domain", "min_block_area"},
-    CaseKey{"domain", "subdivision"},
-    CaseKey{"domain.zones[]", "material", true},
-    CaseKey{"domain.zones[]", "outline", true},
-    CaseKey{"domain.joint_sets[]", "material", true},
-    CaseKey{"domain.joint_sets[]", "dip", true},
-    CaseKey{"domain.joint_sets[]", "spacing", true},
-    CaseKey{"domain.joint_sets[]", "origin"},
-    CaseKey{"domain.joint_sets[]", "trace_length"},
-    CaseKey{"domain.joint_sets[]", "gap"},
-    CaseKey{"domain.joint_sets[]", "staggered"},
-    CaseKey{"domain.joint_sets[]", "spacing_variation"},
-    CaseKey{"domain.joint_sets[]", "dip_variation"},
-    CaseKey{"domain.joint_sets[]", "seed"},
-    CaseKey{"domain.joint_sets[].<variation>", "distribution", true},
-    CaseKey{"domain.joint_sets[].<variation>", "amount", true},
-    CaseKey{"domain.joints[]", "material", true},
-    CaseKey{"domain.joints[]", "from", true},
-    CaseKey{"domain.joints[]", "to", true},
-    CaseKey{"domain.subdivision", "size", true},
-    CaseKey{"domain.subdivision", "pattern"},
-    CaseKey{"domain.subdivision", "jitter"},
-    CaseKey{"domain.subdivision", "seed"},
-    CaseKey{"mesh", "file", true},
-    CaseKey{"mesh", "materials", true},
-    CaseKey{"mesh", "interfaces"},
-    CaseKey{"joints", "default"},
-    CaseKey{"joints", "rules"},
-    CaseKey{"joints.rules[]", "material", true},
-    CaseKey{"joints.rules[]", "line"},
-    CaseKey{"joints.rules[]", "box"},
-    CaseKey{"joints.rules[]", "orientation"},
-    CaseKey{"joints.rules[]", "group"},
-    CaseKey{"joints.rules[]", "tolerance"},
-    CaseKey{"supports[]", "line"},
-    CaseKey{"supports[]", "box"},
-    CaseKey{"supports[]", "group"},
-    CaseKey{"supports[]", "type"},
-    CaseKey{"supports[]", "joint"},
-    CaseKey{"loads", "gravity"},
-    CaseKey{"loads", "points"},
-    CaseKey{"loads", "tractions"},
-    CaseKey{"loads.points[]", "at", true},
-    CaseKey{"loads.points[]", "force", true},
-    CaseKey{"loads.tractions[]", "line"},
-    CaseKey{"loads.tractions[]", "box"},
-    CaseKey{"loads.tractions[]", "group"},
-    CaseKey{"loads.tractions[]", "normal", true},
-    CaseKey{"loads.tractions[]", "shear"},
-    CaseKey{"monitors[]", "name", true},
-    CaseKey{"monitors[]", "at", true},
-    CaseKey{"output", "vtk"},
-    CaseKey{"output", "vtk_every"},
-    CaseKey{"output", "csv"},
-    CaseKey{"stages[]", "name", true},
-    CaseKey{"stages[]", "increments"},
-    CaseKey{"stages[]", "loads"},
-    CaseKey{"stages[]", "control"},
-    CaseKey{"stages[].control", "monitor", true},
-    CaseKey{"stages[].control", "direction", true},
-    CaseKey{"stages[].control", "displacement", true},
-    CaseKey{"limits", "blocks"},
-    CaseKey{"limits", "joint_traces"},
-    CaseKey{"limits", "interfaces"},
-    CaseKey{"limits", "yield_planes"},
-    CaseKey{"limits", "increments"},
-    CaseKey{"limits", "output_mb"},
-};
-
-std::vector<std::string_view> keys_of(std::string_view section) {
-  std::vector<std::string_view> keys;
-  for (const CaseKey& k : kKeys) {
-    if (k.section == section)
-      keys.push_back(k.key);
-  }
-  return keys;
-}
-
-/// Throws for the first required key of `section` that `m` lacks.
-void require_keys(const Map& m, std::string_view section) {
-  for (const CaseKey& k : kKeys) {
-    if (k.section == section && k.required)
-      static_cast<void>(m.at(k.key));
-  }
-}
-
-/// The map `v` of a section: unknown and repeated keys rejected, required keys present.
-Map open(const Value& v, std::string_view section) {
-  Map m(v, keys_of(section));
-  require_keys(m, section);
-  return m;
-}
-
-// ---- Small typed values ------------------------------------------------------------------------
-
-double positive(const Value& v) {
-  const double d = v.number();
-  if (d <= 0.0)
-    v.fail("must be positive");
-  return d;
-}
-
-/// The largest coordinate magnitude [m]. Exact geometry (CGAL) squares and multiplies
-/// coordinates; near 1e308 that overflows and CGAL crashes, so coordinates are bounded here.
-constexpr double kMaxCoordinate = 1e9;
-
-/// A point [x, y] that is a position in the model [m]: each coordinate within kMaxCoordinate.
-Vec2 location(const Value& v) {
-  const Vec2 p = v.point();
-  if (std::abs(p.x()) > kMaxCoordinate || std::abs(p.y()) > kMaxCoordinate) {
-    v.fail(fmt::format("coordinates must lie within +-{:g} m, not [{:g}, {:g}]", kMaxCoordinate,
-                       p.x(), p.y()));
-  }
-  return p;
-}
-
-/// A number whose magnitude is at most `max` (in `unit`): stiffnesses and loads far beyond any
-/// rock or structure overflow the stiffness matrix or the solution, so they are refused.
-double bounded(const Value& v, double max, const char* unit, const char* why) {
-  const double d = v.number();
-  if (std::abs(d) > max)
-    v.fail(fmt::format("must be at most {:g} {} in magnitude ({})", max, unit, why));
-  return d;
-}
-
-/// A point or vector [x, y] each of whose components is bounded(max).
-Vec2 bounded_vector(const Value& v, double max, const char* unit, const char* why) {
-  const Vec2 p = v.point();
-  if (std::abs(p.x()) > max || std::abs(p.y()) > max) {
-    v.fail(fmt::format("each component must be at most {:g} {} in magnitude ({})", max, unit, why));
-  }
-  return p;
-}
-
-constexpr double kMaxModulus = 1e15;    // [Pa]: 1000 times diamond's
-constexpr double kMaxStiffness = 1e20;  // [Pa/m]: kn of a 1e15 Pa layer 10 um thick
-constexpr double kMaxForce = 1e15;      // [N], and [Pa] for tractions
-constexpr const char* kStiffer = "no rock or joint is stiffer; larger values overflow";
-constexpr const char* kLarger = "larger loads overflow the displacements";
-
-/// One of a fixed set of names, e.g. plane: strain | stress.
-template <class E>
-E choice(const Value& v, std::initializer_list<std::pair<std::string_view, E>> options) {
-  const std::string s = v.text();
-  std::string names;
-  for (const auto& [name, value] : options) {
-    if (s == name)
-      return value;
-    if (!names.empty())
-      names.append(", ");
-    names.append(name);
-  }
-  v.fail("unknown value '" + s + "' (allowed: " + names + ")");
-}
-
-/// A non-empty name (material, monitor).
-std::string name(const Value& v) {
-  std::string s = v.text();
-  if (s.empty())
-    v.fail("must not be empty");
-  return s;
-}
 
 /// [[x1, y1], [x2, y2]]: two locations.
 std::pair<Vec2, Vec2> two_locations(const Value& v, const char* what) {
@@ -261,14 +36,6 @@ std::pair<Vec2, Vec2> two_locations(const Value& v, const char* what) {
            std::to_string(p.size()));
   }
   return {location(p[0]), location(p[1])};
-}
-
-template <class Read>
-auto read_list(const Value& v, Read read) {
-  std::vector<decltype(read(v))> out;
-  for (const Value& element : v.list())
-    out.push_back(read(element));
-  return out;
 }
 
 // ---- Selectors ----------------------------------------------------------------------------------
@@ -325,28 +92,6 @@ Selector read_selector(const Map& m, const char* kinds) {
 
 // ---- Sections -----------------------------------------------------------------------------------
 
-/// `schema: 1` must come first, so that a file that is not a case file (or a later schema) is
-/// recognised before anything else is said about it.
-void check_schema(const Value& root) {
-  const std::vector<Entry> entries = root.entries();
-  if (entries.empty())
-    root.fail("the case file is empty: it must start with 'schema: 1'");
-  const Entry& first = entries.front();
-  if (first.key != "schema") {
-    for (const Entry& e : entries) {
-      if (e.key == "schema")
-        e.value.fail("must be the first key of the file");
-    }
-    throw InputError(std::string(root.file()), first.value.line(), "schema",
-                     "missing: a case file starts with 'schema: 1' (found '" + first.key + "')");
-  }
-  const int version = first.value.integer();
-  if (version != kSchemaVersion) {
-    first.value.fail("unsupported version " + std::to_string(version) +
-                     ": this bimrock reads schema " + std::to_string(kSchemaVersion));
-  }
-}
-
 AnalysisSettings read_analysis(const Value& v) {
   const Map m = open(v, "analysis");
   AnalysisSettings s;
@@ -383,33 +128,6 @@ PlasticOptions read_plastic_options(const Value& v) {
   count("max_bisections", o.max_bisections, 200);
   count("max_rounds", o.max_rounds, 1000);
   return o;
-}
-
-/// A map name -> item (materials, joint_materials); names must not be empty.
-template <class Read>
-auto read_named(const Value& v, Read read) {
-  std::vector<decltype(read(v.entries().front()))> out;
-  for (const Entry& e : v.entries()) {
-    if (e.key.empty())
-      e.value.fail("a name must not be empty");
-    out.push_back(read(e));
-  }
-  return out;
-}
-
-/// An angle in degrees, 0 <= angle < 90.
-double angle_deg(const Value& v) {
-  const double a = v.number();
-  if (a < 0.0 || a >= 90.0)
-    v.fail("must be an angle in degrees, 0 <= angle < 90");
-  return a;
-}
-
-double non_negative(const Value& v) {
-  const double d = v.number();
-  if (d < 0.0)
-    v.fail("must be >= 0");
-  return d;
 }
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
@@ -588,14 +306,6 @@ Variation read_variation(const Value& v) {
   if (r.amount < 0.0)
     m.at("amount").fail("must be >= 0");
   return r;
-}
-
-/// A whole number >= 0 for a random seed.
-std::uint64_t seed(const Value& v) {
-  const int s = v.integer();
-  if (s < 0)
-    v.fail("must be a whole number >= 0");
-  return static_cast<std::uint64_t>(s);
 }
 
 JointSet read_joint_set(const Value& v) {
@@ -990,6 +700,28 @@ OutputOptions read_output(const Value& v) {
   return o;
 }
 
+/// `schema: 1` must come first, so that a file that is not a case file (or a later schema) is
+/// recognised before anything else is said about it.
+void check_schema(const Value& root) {
+  const std::vector<Entry> entries = root.entries();
+  if (entries.empty())
+    root.fail("the case file is empty: it must start with 'schema: 1'");
+  const Entry& first = entries.front();
+  if (first.key != "schema") {
+    for (const Entry& e : entries) {
+      if (e.key == "schema")
+        e.value.fail("must be the first key of the file");
+    }
+    throw InputError(std::string(root.file()), first.value.line(), "schema",
+                     "missing: a case file starts with 'schema: 1' (found '" + first.key + "')");
+  }
+  const int version = first.value.integer();
+  if (version != kSchemaVersion) {
+    first.value.fail("unsupported version " + std::to_string(version) +
+                     ": this bimrock reads schema " + std::to_string(kSchemaVersion));
+  }
+}
+
 /// The whole document. Sections are read in dependency order (analysis before the joint
 /// materials that need its plane mode); missing required sections are reported last, so that an
 /// error inside a section that is there (with its line) comes first.
@@ -1139,13 +871,12 @@ YAML::Node parse(const std::string& text, const std::string& file) {
 }
 
 }  // namespace
+}  // namespace bimrock::case_file
 
-std::span<const CaseKey> case_file_keys() {
-  return kKeys;
-}
+namespace bimrock {
 
 Case read_case_string(const std::string& text, const std::string& name) {
-  return read_document(parse(text, name), name);
+  return case_file::read_document(case_file::parse(text, name), name);
 }
 
 Case read_case_file(const std::string& path) {
