@@ -21,4 +21,20 @@ std::vector<std::string_view> keys_of(std::string_view section);
 void require_keys(const Map& m, std::string_view section);
 Map open(const Value& v, std::string_view section);
 
+// case_selector.cpp: where a joint rule, support or traction applies.
+Selector read_selector(const Map& m, const char* kinds);
+
+// case_materials.cpp: materials, joint_materials.
+BlockMaterial read_block_material(const Entry& e);
+JointMaterial read_joint_material(const Entry& e, const AnalysisSettings& settings);
+
+// case_geometry.cpp: blocks, domain, joints.
+BlockSpec read_block(const Value& v);
+DomainSpec read_domain(const Value& v);
+void read_joints(const Value& v, CaseSpec& spec);
+
+// case_mesh.cpp: mesh, and the group selectors it resolves.
+MeshSpec read_mesh(const Value& v, GmshMesh& mesh);
+void resolve_groups(CaseSpec& s, const GmshMesh* mesh);
+
 }  // namespace bimrock::case_file
