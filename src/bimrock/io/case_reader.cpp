@@ -1,20 +1,16 @@
 // The case-file reader: the document (one YAML document, `schema: 1` first), then one small
-// function per section (below, or in case_sections.hpp), each knowing its keys (from the one
-// table kKeys, case_keys.cpp), defaults, units and syntax checks. Everything that needs the whole
-// model (convexity, overlaps, material names, positive stiffness) is left to build_model().
+// function per section (case_sections.hpp), each knowing its keys (from the one table kKeys,
+// case_keys.cpp), defaults, units and syntax checks. Everything that needs the whole model
+// (convexity, overlaps, material names, positive stiffness) is left to build_model().
 #include <bimrock/io/case_reader.hpp>
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <sstream>
 #include <string>
 #include <system_error>
-#include <utility>
 #include <vector>
-
-#include <fmt/core.h>
 
 #include <bimrock/io/case_sections.hpp>
 #include <bimrock/io/gmsh_mesh.hpp>
@@ -24,189 +20,6 @@ namespace bimrock::case_file {
 namespace {
 
 constexpr int kSchemaVersion = 1;
-
-// ---- Sections -----------------------------------------------------------------------------------
-
-AnalysisSettings read_analysis(const Value& v) {
-  const Map m = open(v, "analysis");
-  AnalysisSettings s;
-  if (const auto plane = m.find("plane"))
-    s.plane =
-        choice<PlaneMode>(*plane, {{"strain", PlaneMode::strain}, {"stress", PlaneMode::stress}});
-  if (const auto t = m.find("thickness"))
-    s.thickness = positive(*t);
-  if (const auto p = m.find("penalty_factor"))
-    s.penalty_factor = positive(*p);
-  return s;
-}
-
-/// The analysis section's options of a plastic analysis (docs/case-file.md), each in its range.
-PlasticOptions read_plastic_options(const Value& v) {
-  const Map m = open(v, "analysis");
-  PlasticOptions o;
-  const auto fraction = [&](const char* key, double& field, double most) {
-    if (const auto x = m.find(key)) {
-      field = positive(*x);
-      if (field > most)
-        x->fail(fmt::format("must be at most {}", most));
-    }
-  };
-  const auto count = [&](const char* key, int& field, int most) {
-    if (const auto x = m.find(key)) {
-      field = x->integer();
-      if (field < 1 || field > most)
-        x->fail(fmt::format("must be a whole number from 1 to {}", most));
-    }
-  };
-  fraction("bracket_tolerance", o.bracket_tolerance, 0.5);
-  fraction("yield_tolerance", o.yield_tolerance, 1e-3);
-  count("max_bisections", o.max_bisections, 200);
-  count("max_rounds", o.max_rounds, 1000);
-  return o;
-}
-
-SupportSpec read_support(const Value& v) {
-  const Map m = open(v, "supports[]");
-  SupportSpec s;
-  s.where = read_selector(m, "line, box or group");
-  if (const auto type = m.find("type"))
-    s.kind = choice<SupportKind>(*type,
-                                 {{"fixed", SupportKind::fixed}, {"roller", SupportKind::roller}});
-  if (const auto joint = m.find("joint"))
-    s.joint_material = name(*joint);
-  s.source = v.ref();
-  return s;
-}
-
-/// at [m], force [N] (over the thickness t).
-PointLoadSpec read_point_load(const Value& v) {
-  const Map m = open(v, "loads.points[]");
-  return {location(m.at("at")), bounded_vector(m.at("force"), kMaxForce, "N", kLarger), v.ref()};
-}
-
-/// normal, shear [Pa]: tension positive along the outward normal, shear along s = (-n_y, n_x).
-TractionSpec read_traction(const Value& v) {
-  const Map m = open(v, "loads.tractions[]");
-  TractionSpec t;
-  t.where = read_selector(m, "line, box or group");
-  t.normal = bounded(m.at("normal"), kMaxForce, "Pa", kLarger);
-  if (const auto shear = m.find("shear"))
-    t.shear = bounded(*shear, kMaxForce, "Pa", kLarger);
-  t.source = v.ref();
-  return t;
-}
-
-LoadsSpec read_loads(const Value& v) {
-  const Map m = open(v, "loads");
-  LoadsSpec loads;
-  if (const auto g = m.find("gravity"))
-    loads.gravity = bounded_vector(*g, 1e6, "g", kLarger);
-  if (const auto p = m.find("points"))
-    loads.points = read_list(*p, read_point_load);
-  if (const auto t = m.find("tractions"))
-    loads.tractions = read_list(*t, read_traction);
-  return loads;
-}
-
-/// A name that becomes part of a file name (a monitor's plot_<name>.png): no folder separator,
-/// no control character, not "." or "..", and short enough for a file name with its prefix and
-/// suffix (most file systems allow 255 bytes).
-std::string file_name_part(const Value& v) {
-  std::string s = name(v);
-  constexpr std::size_t kMaxBytes = 200;
-  if (s.size() > kMaxBytes) {
-    v.fail(fmt::format("is {} bytes long: a name is part of a file name, at most {} bytes",
-                       s.size(), kMaxBytes));
-  }
-  for (const char c : s) {
-    if (c == '/' || c == '\\' || static_cast<unsigned char>(c) < 0x20 || c == 0x7F) {
-      v.fail("must not contain '/', '\\' or control characters: a name is part of a file name");
-    }
-  }
-  if (s == "." || s == "..")
-    v.fail("must not be '.' or '..': a name is part of a file name");
-  return s;
-}
-
-std::vector<MonitorSpec> read_monitors(const Value& v) {
-  std::vector<MonitorSpec> monitors;
-  for (const Value& element : v.list()) {
-    const Map m = open(element, "monitors[]");
-    const Value n = m.at("name");
-    MonitorSpec monitor{file_name_part(n), location(m.at("at")), element.ref()};
-    // Monitors are looked up by name (results columns, displacement control): names are unique.
-    for (const MonitorSpec& other : monitors) {
-      if (other.name == monitor.name) {
-        n.fail("monitor name '" + monitor.name + "' already used by " + other.source.item +
-               " (line " + std::to_string(other.source.line) + ")");
-      }
-    }
-    monitors.push_back(std::move(monitor));
-  }
-  return monitors;
-}
-
-/// A load stage: its loads are added to the earlier stages' in `increments` steps, under load
-/// control or with a monitor's displacement prescribed (control).
-StageSpec read_stage(const Value& v) {
-  const Map m = open(v, "stages[]");
-  StageSpec st;
-  st.name = name(m.at("name"));
-  st.source = v.ref();
-  if (const auto n = m.find("increments")) {
-    st.increments = n->integer();
-    if (st.increments < 1)
-      n->fail("must be at least 1");
-  }
-  if (const auto loads = m.find("loads"))
-    st.loads = read_loads(*loads);
-  if (const auto control = m.find("control")) {
-    const Map c = open(*control, "stages[].control");
-    DisplacementControlSpec d;
-    d.monitor = name(c.at("monitor"));
-    d.direction = c.at("direction").point();
-    if (!std::isfinite(d.direction.norm()))
-      c.at("direction").fail("is too long: give a unit vector");
-    if (d.direction.norm() == 0.0)
-      c.at("direction").fail("must not be the zero vector");
-    d.displacement = bounded(c.at("displacement"), kMaxCoordinate, "m", "the model's extent");
-    if (d.displacement == 0.0)
-      c.at("displacement").fail("must not be zero");
-    d.source = control->ref();
-    st.control = d;
-  }
-  return st;
-}
-
-/// limits: each a positive number (a count, or MB for output_mb).
-CaseLimits read_limits(const Value& v) {
-  const Map m = open(v, "limits");
-  CaseLimits l;
-  const std::pair<const char*, double*> fields[] = {
-      {"blocks", &l.blocks},         {"joint_traces", &l.joint_traces},
-      {"interfaces", &l.interfaces}, {"yield_planes", &l.yield_planes},
-      {"increments", &l.increments}, {"output_mb", &l.output_mb}};
-  for (const auto& [key, field] : fields) {
-    if (const auto x = m.find(key)) {
-      *field = positive(*x);
-      l.lines[std::string("limits.") + key] = x->line();
-    }
-  }
-  return l;
-}
-
-OutputOptions read_output(const Value& v) {
-  const Map m = open(v, "output");
-  OutputOptions o;
-  o.vtk = m.boolean_or("vtk", o.vtk);
-  if (const auto every = m.find("vtk_every")) {
-    o.vtk_every = every->integer();
-    if (o.vtk_every < 1)
-      every->fail("must be at least 1");
-  }
-  o.csv = m.boolean_or("csv", o.csv);
-  return o;
-}
 
 /// `schema: 1` must come first, so that a file that is not a case file (or a later schema) is
 /// recognised before anything else is said about it.

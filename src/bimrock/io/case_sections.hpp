@@ -24,6 +24,12 @@ Map open(const Value& v, std::string_view section);
 // case_selector.cpp: where a joint rule, support or traction applies.
 Selector read_selector(const Map& m, const char* kinds);
 
+// case_settings.cpp: analysis, limits, output.
+AnalysisSettings read_analysis(const Value& v);
+PlasticOptions read_plastic_options(const Value& v);
+CaseLimits read_limits(const Value& v);
+OutputOptions read_output(const Value& v);
+
 // case_materials.cpp: materials, joint_materials.
 BlockMaterial read_block_material(const Entry& e);
 JointMaterial read_joint_material(const Entry& e, const AnalysisSettings& settings);
@@ -36,5 +42,13 @@ void read_joints(const Value& v, CaseSpec& spec);
 // case_mesh.cpp: mesh, and the group selectors it resolves.
 MeshSpec read_mesh(const Value& v, GmshMesh& mesh);
 void resolve_groups(CaseSpec& s, const GmshMesh* mesh);
+
+// case_loading.cpp: supports, loads, stages.
+SupportSpec read_support(const Value& v);
+LoadsSpec read_loads(const Value& v);
+StageSpec read_stage(const Value& v);
+
+// case_monitors.cpp: monitors.
+std::vector<MonitorSpec> read_monitors(const Value& v);
 
 }  // namespace bimrock::case_file
