@@ -1,0 +1,80 @@
+/// @file The run's settings: the analysis section (plane mode, thickness, penalty factor and the
+/// options of a plastic analysis), limits and output.
+#include <bimrock/io/case_sections.hpp>
+
+#include <string>
+#include <utility>
+
+#include <fmt/core.h>
+
+namespace bimrock::case_file {
+
+AnalysisSettings read_analysis(const Value& v) {
+  const Map m = open(v, "analysis");
+  AnalysisSettings s;
+  if (const auto plane = m.find("plane"))
+    s.plane =
+        choice<PlaneMode>(*plane, {{"strain", PlaneMode::strain}, {"stress", PlaneMode::stress}});
+  if (const auto t = m.find("thickness"))
+    s.thickness = positive(*t);
+  if (const auto p = m.find("penalty_factor"))
+    s.penalty_factor = positive(*p);
+  return s;
+}
+
+/// The analysis section's options of a plastic analysis (docs/case-file.md), each in its range.
+PlasticOptions read_plastic_options(const Value& v) {
+  const Map m = open(v, "analysis");
+  PlasticOptions o;
+  const auto fraction = [&](const char* key, double& field, double most) {
+    if (const auto x = m.find(key)) {
+      field = positive(*x);
+      if (field > most)
+        x->fail(fmt::format("must be at most {}", most));
+    }
+  };
+  const auto count = [&](const char* key, int& field, int most) {
+    if (const auto x = m.find(key)) {
+      field = x->integer();
+      if (field < 1 || field > most)
+        x->fail(fmt::format("must be a whole number from 1 to {}", most));
+    }
+  };
+  fraction("bracket_tolerance", o.bracket_tolerance, 0.5);
+  fraction("yield_tolerance", o.yield_tolerance, 1e-3);
+  count("max_bisections", o.max_bisections, 200);
+  count("max_rounds", o.max_rounds, 1000);
+  return o;
+}
+
+/// limits: each a positive number (a count, or MB for output_mb).
+CaseLimits read_limits(const Value& v) {
+  const Map m = open(v, "limits");
+  CaseLimits l;
+  const std::pair<const char*, double*> fields[] = {
+      {"blocks", &l.blocks},         {"joint_traces", &l.joint_traces},
+      {"interfaces", &l.interfaces}, {"yield_planes", &l.yield_planes},
+      {"increments", &l.increments}, {"output_mb", &l.output_mb}};
+  for (const auto& [key, field] : fields) {
+    if (const auto x = m.find(key)) {
+      *field = positive(*x);
+      l.lines[std::string("limits.") + key] = x->line();
+    }
+  }
+  return l;
+}
+
+OutputOptions read_output(const Value& v) {
+  const Map m = open(v, "output");
+  OutputOptions o;
+  o.vtk = m.boolean_or("vtk", o.vtk);
+  if (const auto every = m.find("vtk_every")) {
+    o.vtk_every = every->integer();
+    if (o.vtk_every < 1)
+      every->fail("must be at least 1");
+  }
+  o.csv = m.boolean_or("csv", o.csv);
+  return o;
+}
+
+}  // namespace bimrock::case_file
