@@ -233,5 +233,27 @@ TEST(GmshLayeredGroundExample, SettlementMatchesOneDimensionalCompression) {
   std::filesystem::remove_all(out.parent_path());
 }
 
+// The plane failure example: a block on a joint dipping 35 degrees, c = 20 kPa, phi = 30 deg.
+// Limit equilibrium of the sliding block (the README's derivation) gives
+// F = (c L + W cos(35) tan(30)) / (W sin(35)); the bracket must hold it to its tolerance.
+TEST(PlaneFailureExample, FactorOfSafetyBracketsLimitEquilibrium) {
+  const fs::path out = run_example("plane_failure/case.yaml");
+  const nlohmann::json s = testing::read_json(out / "summary.json");
+  const double deg = M_PI / 180.0;
+  const double toe_x = 10.0 * std::cos(35 * deg), height = 10.0 * std::sin(35 * deg);
+  const double area = 0.5 * height * (toe_x - 4.0);  // the triangle (0, 0), (toe_x, h), (4, h)
+  const double w = 26e3 * area;
+  const double expected =
+      (20e3 * 10.0 + w * std::cos(35 * deg) * std::tan(30 * deg)) / (w * std::sin(35 * deg));
+  const nlohmann::json& f = s.at("factor_of_safety");
+  const double lower = f.at("lower").get<double>(), upper = f.at("upper").get<double>();
+  EXPECT_LE(lower, expected);
+  EXPECT_GE(upper, expected);
+  EXPECT_LE(upper - lower, 1.1e-3 * upper);
+  EXPECT_EQ(f.at("mechanism_blocks").at("moves"), nlohmann::json::array({1}));
+  EXPECT_TRUE(fs::exists(out / "fos_mechanism.png"));
+  EXPECT_TRUE(fs::exists(out / "fos_trials.svg"));
+}
+
 }  // namespace
 }  // namespace bimrock

@@ -111,6 +111,40 @@ TEST(CaseReader, ReadsThePlasticAnalysisOptionsAndTheirDefaults) {
   EXPECT_EQ(defaults.plastic.max_bisections, PlasticOptions{}.max_bisections);
 }
 
+TEST(CaseReader, ReadsTheFactorOfSafetySectionAndResolvesItsMaterials) {
+  const std::string base = R"(schema: 1
+materials:
+  rock: {E: 10.0e9, nu: 0.2}
+joint_materials:
+  weak: {kn: 1.0e9, ks: 1.0e9, friction: 30}
+  glue: {kn: 1.0e9, ks: 1.0e9}
+blocks:
+  - {material: rock, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
+stages: [{name: gravity, loads: {gravity: [0, -1]}}]
+)";
+  const Case c = read_case_string(base +
+                                      "factor_of_safety: {materials: [weak], tolerance: 2.0e-3, "
+                                      "step: 0.1, largest: 4}\n",
+                                  "case.yaml");
+  ASSERT_TRUE(c.plastic.factor_of_safety.has_value());
+  const FactorOfSafetyOptions& f = *c.plastic.factor_of_safety;
+  EXPECT_DOUBLE_EQ(f.tolerance, 2.0e-3);
+  EXPECT_DOUBLE_EQ(f.step, 0.1);
+  EXPECT_DOUBLE_EQ(f.largest, 4.0);
+  ASSERT_EQ(f.selection.joint_materials.size(), 2u);
+  EXPECT_EQ(f.selection.joint_materials[0], 1);  // weak
+  EXPECT_EQ(f.selection.joint_materials[1], 0);  // glue
+  EXPECT_EQ(f.selection.block_materials, std::vector<char>(1, 0));
+
+  const Failure elastic = error_of(base + "factor_of_safety: {materials: [glue]}\n");
+  EXPECT_EQ(elastic.item, "factor_of_safety.materials[0]");
+  EXPECT_NE(elastic.message.find("no strength"), std::string::npos) << elastic.message;
+  const Failure unknown = error_of(base + "factor_of_safety: {materials: [granite]}\n");
+  EXPECT_NE(unknown.message.find("neither a material nor a joint material"), std::string::npos);
+  const Failure without_stages = error_of(kMinimal + "factor_of_safety: {}\n");
+  EXPECT_EQ(without_stages.item, "factor_of_safety");
+}
+
 TEST(CaseReaderErrors, PlasticAnalysisOptionsOutOfRangeAreRejected) {
   const Failure wide = error_of(kMinimal + "analysis: {bracket_tolerance: 0.6}\n");
   EXPECT_EQ(wide.item, "analysis.bracket_tolerance");

@@ -168,11 +168,14 @@ struct IterateCheck {
 // blocks flowing plastically together) appears as a tiny positive eigenvalue and the multipliers
 // blow up instead of a certificate being found. Plastic displacements that dwarf the elastic
 // ones of the same step are that mechanism.
-bool round_off_mechanism(const StageContext& ctx, const Eigen::VectorXd& plastic_du, double step) {
+bool round_off_mechanism(const StageContext& ctx, const AnalysisState& s,
+                         const Eigen::VectorXd& plastic_du, double step) {
   if (ctx.stage.control)
     return false;
+  // A step of no load (strength reduction) is measured against the displacements so far.
   const double elastic = std::abs(step) * ctx.x_ref.cwiseAbs().maxCoeff();
-  return plastic_du.cwiseAbs().maxCoeff() > kMechanismRatio * elastic;
+  const double scale = elastic > 0.0 ? elastic : s.u.cwiseAbs().maxCoeff();
+  return scale > 0.0 && plastic_du.cwiseAbs().maxCoeff() > kMechanismRatio * scale;
 }
 
 // Adds a solve's work to the trial's; whether it ran on the reduced tangent.
@@ -280,7 +283,7 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
     const Eigen::VectorXd plastic_du = sys.size() > 0
                                            ? ctx.k.solve(Eigen::VectorXd(sys.phi * lambda))
                                            : Eigen::VectorXd::Zero(ctx.model.n_dofs());
-    if (round_off_mechanism(ctx, plastic_du, step)) {
+    if (round_off_mechanism(ctx, s, plastic_du, step)) {
       const double top = lambda.cwiseAbs().maxCoeff();
       t.du = plastic_du / top;
       return collapse(sys, lambda.cwiseAbs() / top, ctx, std::move(t));

@@ -97,4 +97,25 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   return out;
 }
 
+// The mechanism: the certificate of the failed step where it has one, else the flow of the last
+// carried step (near collapse it is dominated by the mechanism).
+Collapse describe_collapse(int stage, double carried, double failed, const Trial* failure,
+                           const Trial* last) {
+  Collapse c{stage, carried, failed, {}, {}};
+  const Trial* source = failure && failure->ray.size() > 0 ? failure : last;
+  if (!source || source->rows.empty())
+    return c;
+  const Eigen::VectorXd& flow = source == failure ? failure->ray : last->lambda;
+  const double top = flow.cwiseAbs().maxCoeff();
+  for (std::size_t k = 0; k < source->rows.size(); ++k) {
+    const double l = flow(static_cast<Eigen::Index>(k));
+    if (top > 0.0 && std::abs(l) > 1e-3 * top)
+      c.mechanism.push_back({source->rows[k].point, source->rows[k].mode, l / top});
+  }
+  const double norm = source->du.norm();
+  if (norm > 0.0)
+    c.direction = source->du / norm;
+  return c;
+}
+
 }  // namespace bimrock

@@ -8,6 +8,7 @@
 #include <functional>
 #include <optional>
 
+#include <bimrock/analysis/collapse.hpp>
 #include <bimrock/analysis/increment.hpp>
 
 namespace bimrock {
@@ -42,5 +43,11 @@ using CarryStep = std::function<void(const Trial&)>;
 /// Carries one increment of `step` from stage factor `factor`.
 SteppedIncrement step_increment(double step, double factor, const TryStep& try_step,
                                 const CarryStep& carry, const SteppingOptions& options);
+
+/// The collapse of stage `stage` in [carried, failed], with the mechanism of the failed trial
+/// where it has a certificate, else the flow of the last carried trial (near a collapse it is
+/// dominated by the mechanism).
+Collapse describe_collapse(int stage, double carried, double failed, const Trial* failure,
+                           const Trial* last);
 
 }  // namespace bimrock

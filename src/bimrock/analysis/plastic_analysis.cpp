@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include <bimrock/analysis/factor_of_safety_search.hpp>
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/increment.hpp>
 #include <bimrock/analysis/load_stepping.hpp>
@@ -43,27 +44,6 @@ IncrementRecord record(const Model& model, const Trial& t, int stage, int increm
   r.rounds = t.rounds;
   r.seconds = seconds;
   return r;
-}
-
-// The mechanism: the ray of the failed step where Lemke found one, else the flow of the last
-// carried step (near collapse it is dominated by the mechanism).
-Collapse describe_collapse(int stage, double carried, double failed, const Trial* failure,
-                           const Trial* last) {
-  Collapse c{stage, carried, failed, {}, {}};
-  const Trial* source = failure && failure->ray.size() > 0 ? failure : last;
-  if (!source || source->rows.empty())
-    return c;
-  const Eigen::VectorXd& flow = source == failure ? failure->ray : last->lambda;
-  const double top = flow.cwiseAbs().maxCoeff();
-  for (std::size_t k = 0; k < source->rows.size(); ++k) {
-    const double l = flow(static_cast<Eigen::Index>(k));
-    if (top > 0.0 && std::abs(l) > 1e-3 * top)
-      c.mechanism.push_back({source->rows[k].point, source->rows[k].mode, l / top});
-  }
-  const double norm = source->du.norm();
-  if (norm > 0.0)
-    c.direction = source->du / norm;
-  return c;
 }
 
 // The stage's reference load: x_ref = K^-1 P_stage, and under displacement control the monitor's
@@ -196,6 +176,10 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       }
     }
   }
+  if (options.factor_of_safety)
+    result.factor_of_safety =
+        find_factor_of_safety(model, result.points, k, result.state, *options.factor_of_safety,
+                              options, tuning.candidates, solver, memory, result.timings);
   return with_statistics(std::move(result), k, solver, memory);
 }
 

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include <bimrock/analysis/analysis_state.hpp>
+#include <bimrock/analysis/collapse.hpp>
+#include <bimrock/analysis/factor_of_safety.hpp>
 #include <bimrock/analysis/plastic_options.hpp>
 #include <bimrock/analysis/timings.hpp>
 #include <bimrock/assembly/yield_points.hpp>
@@ -30,27 +32,6 @@ struct IncrementRecord {
   double seconds = 0.0;            ///< since the last record (failed trials included) [s]
 };
 
-/// One active yield mode of a collapse mechanism.
-struct MechanismEntry {
-  int point = 0;
-  int mode = 0;
-  double multiplier = 0.0;  ///< normalized to the largest
-};
-
-/// The structure could not carry a load increment: the collapse load lies in
-/// [carried, failed] (stage factors) and the mechanism is that of the last carried step.
-struct Collapse {
-  int stage = 0;
-  double carried = 0.0;
-  double failed = 0.0;
-  std::vector<MechanismEntry> mechanism;
-  Eigen::VectorXd direction;  ///< displacement increment of the last carried step, unit norm
-  /// Nothing of the first stage could be carried: the structure is proven to fail under a
-  /// fraction of its first load no larger than the bracket tolerance (e.g. a cohesionless arch
-  /// thinner than its least thickness under its own weight). `failed` is that fraction.
-  bool unstable_at_first_load = false;
-};
-
 /// The analysis stopped before the end of its stages without a proven collapse: an increment
 /// could be neither carried nor shown to have no solution (round-off near a limit load).
 struct Stop {
@@ -65,6 +46,8 @@ struct PlasticResult {
   std::vector<IncrementRecord> history;
   std::optional<Collapse> collapse;
   std::optional<Stop> stopped;
+  /// With PlasticOptions::factor_of_safety, after stages that carried: F by strength reduction.
+  std::optional<FactorOfSafety> factor_of_safety;
   Timings timings;
   /// Times K was condensed onto a zone (factorized again in another order; the last may be
   /// "no condensation"), times a zone outgrown was replaced by a reserve zone of the same

@@ -1,7 +1,10 @@
 #pragma once
 /// @file What a user sets for a plastic analysis (the case file's `analysis:` section), apart
 /// from the expert tuning of the solution strategy, whose defaults are the method's.
+#include <optional>
+
 #include <bimrock/analysis/candidates.hpp>
+#include <bimrock/analysis/factor_of_safety.hpp>
 #include <bimrock/solve/increment_solver.hpp>
 
 namespace bimrock {
@@ -16,6 +19,8 @@ struct PlasticOptions {
   /// A yield function counts as violated above this fraction of the stress scale (the largest
   /// stress component or strength met).
   double yield_tolerance = 1e-9;
+  /// After the stages, the factor of safety by strength reduction (none: not sought).
+  std::optional<FactorOfSafetyOptions> factor_of_safety;
 };
 
 /// Expert tuning of the solution strategy: the candidates of each LCP, and how it is solved.

@@ -95,6 +95,24 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
   } else {
     fmt::print("all {} stages carried\n", model.stages.size());
   }
+  if (result.factor_of_safety) {
+    const FactorOfSafety& f = *result.factor_of_safety;
+    if (f.collapse)
+      fmt::print(
+          "FACTOR OF SAFETY (strength reduction): F between {:.4f} (carried) and {:.4f} (fails); "
+          "{} yield modes in its mechanism (summary.json, fos_mechanism.png)\n",
+          f.lower, f.collapse->failed, f.collapse->mechanism.size());
+    else if (f.undecided)
+      fmt::print(
+          "FACTOR OF SAFETY (strength reduction): F >= {:.4f}; the next step could not be "
+          "solved accurately, nor shown to fail\n",
+          f.lower);
+    else
+      fmt::print(
+          "FACTOR OF SAFETY (strength reduction): F >= {:.4f}, the largest tried "
+          "(factor_of_safety.largest)\n",
+          f.lower);
+  }
   print_timings(result.timings);
   fmt::print("results written to {}/\n", out.string());
 }

@@ -107,6 +107,11 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
     if (s.stages.empty())
       v->fail("give at least one stage");
   }
+  if (const auto v = m.find("factor_of_safety")) {
+    if (!m.has("stages"))
+      v->fail("a factor of safety is sought after the stages of a nonlinear analysis: give stages");
+    c.plastic.factor_of_safety = read_factor_of_safety(*v, s);
+  }
   resolve_groups(s, mesh ? &*mesh : nullptr);
   require_keys(m, "");
   if (!m.has("blocks") && !m.has("domain") && !m.has("mesh"))

@@ -27,6 +27,7 @@ Selector read_selector(const Map& m, const char* kinds);
 // case_settings.cpp: analysis, limits, output.
 AnalysisSettings read_analysis(const Value& v);
 PlasticOptions read_plastic_options(const Value& v);
+FactorOfSafetyOptions read_factor_of_safety(const Value& v, const CaseSpec& spec);
 CaseLimits read_limits(const Value& v);
 OutputOptions read_output(const Value& v);
 

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <fmt/core.h>
 
@@ -44,6 +45,59 @@ PlasticOptions read_plastic_options(const Value& v) {
   fraction("yield_tolerance", o.yield_tolerance, 1e-3);
   count("max_bisections", o.max_bisections, 200);
   count("max_rounds", o.max_rounds, 1000);
+  return o;
+}
+
+/// factor_of_safety: the materials whose strength is reduced (names of materials or joint
+/// materials with a strength law; default every one), the bracket's relative tolerance, the
+/// step of F between trials and the largest F tried.
+FactorOfSafetyOptions read_factor_of_safety(const Value& v, const CaseSpec& spec) {
+  const Map m = open(v, "factor_of_safety");
+  FactorOfSafetyOptions o;
+  if (const auto x = m.find("tolerance")) {
+    o.tolerance = positive(*x);
+    if (o.tolerance > 0.1)
+      x->fail("must be at most 0.1");
+  }
+  if (const auto x = m.find("step")) {
+    o.step = positive(*x);
+    if (o.step > 10.0)
+      x->fail("must be at most 10");
+  }
+  if (const auto x = m.find("largest")) {
+    o.largest = positive(*x);
+    if (o.largest <= 1.0 || o.largest > 1000.0)
+      x->fail("must be above 1 and at most 1000 (F = 1 is the state the stages reach)");
+  }
+  if (const auto x = m.find("materials")) {
+    o.selection.joint_materials.assign(spec.joint_materials.size(), 0);
+    o.selection.block_materials.assign(spec.block_materials.size(), 0);
+    const std::vector<Value> items = x->list();
+    std::vector<std::string> names;
+    for (const Value& item : items)
+      names.push_back(name(item));
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      bool found = false;
+      for (std::size_t j = 0; j < spec.joint_materials.size(); ++j)
+        if (spec.joint_materials[j].name == names[k]) {
+          if (!spec.joint_materials[j].strength)
+            items[k].fail("joint material '" + names[k] + "' has no strength to reduce");
+          o.selection.joint_materials[j] = 1;
+          found = true;
+        }
+      for (std::size_t b = 0; b < spec.block_materials.size(); ++b)
+        if (spec.block_materials[b].name == names[k]) {
+          if (!spec.block_materials[b].strength)
+            items[k].fail("material '" + names[k] + "' has no strength to reduce");
+          o.selection.block_materials[b] = 1;
+          found = true;
+        }
+      if (!found)
+        items[k].fail("'" + names[k] + "' is neither a material nor a joint material");
+    }
+    if (names.empty())
+      x->fail("name at least one material, or leave the key out to reduce every strength");
+  }
   return o;
 }
 

@@ -7,6 +7,7 @@
 
 #include <bimrock/io/block_picture.hpp>
 #include <bimrock/io/history_writer.hpp>
+#include <bimrock/io/line_plot.hpp>
 #include <bimrock/io/mechanism_table.hpp>
 #include <bimrock/io/run_summary.hpp>
 #include <bimrock/io/state_tables.hpp>
@@ -33,21 +34,65 @@ void write_final_state(const Model& model, const ElasticSolution& fields,
 }
 
 // The interface marks of a collapse mechanism: its slipping and opening joints.
-std::vector<InterfaceMark> mechanism_marks(const Model& model, const PlasticResult& result) {
+std::vector<InterfaceMark> mechanism_marks(const Model& model,
+                                           const std::vector<YieldPoint>& points,
+                                           const Collapse& collapse) {
   std::vector<InterfaceMark> marks(static_cast<std::size_t>(model.n_interfaces()),
                                    InterfaceMark::none);
   for (std::size_t f = 0; f < marks.size(); ++f) {
     if (model.interfaces[f].joint_material >= 0 && !model.interfaces[f].is_support())
       marks[f] = InterfaceMark::joint;
   }
-  for (const MechanismEntry& e : result.collapse->mechanism) {
-    const YieldPoint& p = result.points[static_cast<std::size_t>(e.point)];
+  for (const MechanismEntry& e : collapse.mechanism) {
+    const YieldPoint& p = points[static_cast<std::size_t>(e.point)];
     if (!p.is_interface())
       continue;
     marks[static_cast<std::size_t>(p.owner)] =
         e.mode == 2 ? InterfaceMark::opening : InterfaceMark::slipping;
   }
   return marks;
+}
+
+// The factor of safety's pictures: F against the largest plastic multiplier of its step, and the
+// mechanism at the smallest F that fails.
+void write_factor_of_safety(const Model& model, const PlasticResult& result, const fs::path& dir,
+                            std::vector<std::string>& files) {
+  const FactorOfSafety& f = *result.factor_of_safety;
+  // The monitors' displacements since F = 1 where there are monitors, else each step's largest
+  // plastic multiplier.
+  std::vector<PlotSeries> series;
+  for (std::size_t m = 0; m < model.monitors.size(); ++m) {
+    PlotSeries s{"monitor " + model.monitors[m].name, {}, {}};
+    for (const FactorTrial& t : f.trials) {
+      s.x.push_back(t.factor);
+      s.y.push_back(t.monitors[m].norm());
+    }
+    series.push_back(std::move(s));
+  }
+  if (series.empty()) {
+    PlotSeries s{"largest plastic multiplier of the step", {}, {}};
+    for (const FactorTrial& t : f.trials) {
+      s.x.push_back(t.factor);
+      s.y.push_back(t.largest_flow);
+    }
+    series.push_back(std::move(s));
+  }
+  write_line_plot({"factor of safety: strength reduction", "F (strengths divided by F)",
+                   model.monitors.empty() ? "largest plastic multiplier of the step [m]"
+                                          : "displacement since F = 1 [m]",
+                   series},
+                  dir / "fos_trials");
+  files.insert(files.end(), {"fos_trials.png", "fos_trials.svg"});
+  if (f.collapse && f.collapse->direction.size() == model.n_dofs() &&
+      model.n_blocks() <= kMaxPictureBlocks) {
+    write_block_picture(
+        model,
+        {fmt::format("mechanism at F = {:.4g} (red: slipping joints, blue: opening)",
+                     f.collapse->failed),
+         f.collapse->direction, 0.08, mechanism_marks(model, result.points, *f.collapse), 1000},
+        dir / "fos_mechanism");
+    files.insert(files.end(), {"fos_mechanism.png", "fos_mechanism.svg"});
+  }
 }
 
 }  // namespace
@@ -187,13 +232,16 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
                         dir / "final");
     files.insert(files.end(), {"final.png", "final.svg"});
     if (result.collapse && result.collapse->direction.size() == model_.n_dofs()) {
-      write_block_picture(model_,
-                          {"collapse mechanism (red: slipping joints, blue: opening)",
-                           result.collapse->direction, 0.08, mechanism_marks(model_, result), 1000},
-                          dir / "collapse");
+      write_block_picture(
+          model_,
+          {"collapse mechanism (red: slipping joints, blue: opening)", result.collapse->direction,
+           0.08, mechanism_marks(model_, result.points, *result.collapse), 1000},
+          dir / "collapse");
       files.insert(files.end(), {"collapse.png", "collapse.svg"});
     }
   }
+  if (result.factor_of_safety)
+    write_factor_of_safety(model_, result, dir, files);
   write_json(run_summary(model_, fields, &result, files), dir / "summary.json");
   folder_.commit();
   return fields;

@@ -94,6 +94,30 @@ json mechanism_joints_json(const std::vector<YieldPoint>& points,
   return list;
 }
 
+// The factor of safety: its bracket, every F carried, and the mechanism at the smallest F proven
+// to fail.
+json factor_of_safety_json(const Model& model, const std::vector<YieldPoint>& points,
+                           const FactorOfSafety& f) {
+  json trials = json::array();
+  for (const FactorTrial& t : f.trials)
+    trials.push_back({{"factor", t.factor}, {"largest_flow", t.largest_flow}});
+  json out = {{"lower", f.lower},
+              {"upper", f.collapse ? json(f.collapse->failed) : json()},
+              {"largest_tried", f.largest},
+              {"undecided", f.undecided},
+              {"trials", trials}};
+  if (f.collapse) {
+    const MechanismBlocks blocks = mechanism_blocks(model, f.collapse->direction);
+    const std::vector<MechanismJoint> joints =
+        mechanism_joints(model, points, *f.collapse, blocks.scale);
+    out["mechanism"] = mechanism_json(points, *f.collapse, joints);
+    out["mechanism_joints"] = mechanism_joints_json(points, joints);
+    if (f.collapse->direction.size() == model.n_dofs())
+      out["mechanism_blocks"] = mechanism_blocks_json(blocks);
+  }
+  return out;
+}
+
 }  // namespace
 
 json run_summary(const Model& model, const ElasticSolution& fields, const PlasticResult* plastic,
@@ -162,6 +186,9 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
     } else {
       j["collapse"] = nullptr;
     }
+    if (plastic->factor_of_safety)
+      j["factor_of_safety"] =
+          factor_of_safety_json(model, plastic->points, *plastic->factor_of_safety);
     if (plastic->stopped) {
       const Stop& st = *plastic->stopped;
       j["stopped"] = {{"stage", model.stages[static_cast<std::size_t>(st.stage)].name},

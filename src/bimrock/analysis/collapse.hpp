@@ -1,0 +1,30 @@
+#pragma once
+/// @file What a collapse is reported with: the bracket of the collapse load and the mechanism.
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace bimrock {
+
+/// One active yield mode of a collapse mechanism.
+struct MechanismEntry {
+  int point = 0;
+  int mode = 0;
+  double multiplier = 0.0;  ///< normalized to the largest
+};
+
+/// The structure could not carry a load increment: the collapse load lies in
+/// [carried, failed] (stage factors) and the mechanism is that of the last carried step.
+struct Collapse {
+  int stage = 0;
+  double carried = 0.0;
+  double failed = 0.0;
+  std::vector<MechanismEntry> mechanism;
+  Eigen::VectorXd direction;  ///< displacement increment of the last carried step, unit norm
+  /// Nothing of the first stage could be carried: the structure is proven to fail under a
+  /// fraction of its first load no larger than the bracket tolerance (e.g. a cohesionless arch
+  /// thinner than its least thickness under its own weight). `failed` is that fraction.
+  bool unstable_at_first_load = false;
+};
+
+}  // namespace bimrock

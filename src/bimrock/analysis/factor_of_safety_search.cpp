@@ -1,0 +1,72 @@
+#include <bimrock/analysis/factor_of_safety_search.hpp>
+
+#include <algorithm>
+#include <optional>
+
+#include <bimrock/analysis/field_results.hpp>
+#include <bimrock/analysis/load_stepping.hpp>
+
+namespace bimrock {
+
+FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<YieldPoint>& points,
+                                     const SparseCholesky& k, const AnalysisState& start,
+                                     const FactorOfSafetyOptions& fos,
+                                     const PlasticOptions& options, const CandidateTuning& tuning,
+                                     IncrementSolver& solver, IncrementMemory& memory,
+                                     Timings& timings) {
+  const StrengthSelection selection =
+      fos.selection.joint_materials.empty() && fos.selection.block_materials.empty()
+          ? all_strengths(model)
+          : fos.selection;
+  // The strength reduction is a stage of no load whose factor is F itself: the yield functions
+  // of the reduced strengths are violated at the state carried, and each step's LCP finds the
+  // plastic flow that restores them (eqs. 24-28 with dU_load = 0).
+  Stage reduction;
+  reduction.name = "factor of safety";
+  const Eigen::VectorXd no_load = Eigen::VectorXd::Zero(model.n_dofs());
+  AnalysisState state = start;
+  state.stage_factor = 1.0;
+  FactorOfSafety out;
+  out.largest = fos.largest;
+  const auto monitors = [&](const Eigen::VectorXd& u) {
+    std::vector<Vec2> d;
+    for (const Monitor& m : model.monitors)
+      d.push_back(displacement_at(model, m.block, m.point, u) -
+                  displacement_at(model, m.block, m.point, start.u));
+    return d;
+  };
+  out.trials.push_back({1.0, 0.0, monitors(start.u)});
+  std::optional<Trial> last;
+  const TryStep try_step = [&](double step) {
+    const Model reduced = reduce_strength(model, selection, state.stage_factor + step);
+    const YieldEvaluator yield(reduced, points);
+    const StageContext ctx{reduced, points, k, reduction, yield, no_load, {}, 0.0, &timings};
+    return solve_increment(ctx, state, step, options, tuning, solver, memory);
+  };
+  const CarryStep carry = [&](const Trial& t) {
+    state = t.next;
+    out.lower = state.stage_factor;
+    out.trials.push_back(
+        {out.lower, t.lambda.size() > 0 ? t.lambda.cwiseAbs().maxCoeff() : 0.0, monitors(state.u)});
+    last = t;
+  };
+  const SteppingOptions stepping{fos.tolerance, options.max_bisections, false, false};
+  while (state.stage_factor < fos.largest * (1.0 - 1e-12)) {
+    const double step = std::min(fos.step, fos.largest - state.stage_factor);
+    const SteppedIncrement done =
+        step_increment(step, state.stage_factor, try_step, carry, stepping);
+    if (done.outcome == SteppedIncrement::Outcome::collapse) {
+      out.collapse =
+          describe_collapse(0, done.carried, done.failed, done.failure ? &*done.failure : nullptr,
+                            last ? &*last : nullptr);
+      break;
+    }
+    if (done.outcome == SteppedIncrement::Outcome::undecided) {
+      out.undecided = true;
+      break;
+    }
+  }
+  return out;
+}
+
+}  // namespace bimrock

@@ -1,0 +1,57 @@
+#include <bimrock/analysis/strength_reduction.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace bimrock {
+namespace {
+
+Softening divided(Softening law, double factor) {
+  law.peak /= factor;
+  law.residual /= factor;
+  return law;
+}
+
+// sin of the angle whose tangent is tan(asin(s)) / factor.
+double reduced_sine(double sine, double factor) {
+  const double angle = std::atan(std::tan(std::asin(sine)) / factor);
+  return std::sin(angle);
+}
+
+}  // namespace
+
+StrengthSelection all_strengths(const Model& model) {
+  StrengthSelection s;
+  for (const JointMaterial& m : model.joint_materials)
+    s.joint_materials.push_back(m.strength ? 1 : 0);
+  for (const BlockMaterial& m : model.block_materials)
+    s.block_materials.push_back(m.strength ? 1 : 0);
+  return s;
+}
+
+Model reduce_strength(const Model& model, const StrengthSelection& selection, double factor) {
+  if (!(factor > 0.0) || !std::isfinite(factor))
+    throw std::invalid_argument("reduce_strength: the factor must be positive and finite");
+  Model reduced = model;
+  for (std::size_t m = 0; m < reduced.joint_materials.size(); ++m) {
+    std::optional<JointStrength>& s = reduced.joint_materials[m].strength;
+    if (!s || m >= selection.joint_materials.size() || !selection.joint_materials[m])
+      continue;
+    s->cohesion = divided(s->cohesion, factor);
+    s->friction = divided(s->friction, factor);
+    s->tensile = divided(s->tensile, factor);
+    s->dilation = std::min(s->dilation, s->friction.peak);
+  }
+  for (std::size_t m = 0; m < reduced.block_materials.size(); ++m) {
+    std::optional<BlockStrength>& s = reduced.block_materials[m].strength;
+    if (!s || m >= selection.block_materials.size() || !selection.block_materials[m])
+      continue;
+    s->cohesion /= factor;
+    s->friction = reduced_sine(s->friction, factor);
+    s->dilation = std::min(s->dilation, s->friction);
+  }
+  return reduced;
+}
+
+}  // namespace bimrock

@@ -1,0 +1,78 @@
+// Verification: the factor of safety by strength reduction of a block on an inclined plane.
+//
+// Source of the expected numbers: limit equilibrium of a rigid block sliding on a plane, exact
+// for this mechanism (the block is wide and low, so it slides before it could topple). With the
+// strengths divided by F the block slides when the shear it carries, W sin(alpha), equals the
+// reduced strength of its base, (c L + W cos(alpha) tan(phi)) / F:
+//     F = (c L + W cos(alpha) tan(phi)) / (W sin(alpha)),
+// which is tan(phi) / tan(alpha) without cohesion. The bracket [lower, upper] must hold F and be
+// as narrow as asked; a block on a level plane carries no shear and is stable for every F.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include <bimrock/analysis/plastic_analysis.hpp>
+
+#include "support/incline_case.hpp"
+
+namespace bimrock {
+namespace {
+
+using testing::Incline;
+using testing::kDeg;
+
+PlasticResult with_factor_of_safety(const CaseSpec& c, double largest = 10.0) {
+  PlasticOptions options;
+  options.factor_of_safety = FactorOfSafetyOptions{};
+  options.factor_of_safety->largest = largest;
+  return run_plastic_analysis(build_model(c), options);
+}
+
+void expect_bracket(const PlasticResult& r, double expected) {
+  ASSERT_FALSE(r.collapse.has_value());
+  ASSERT_TRUE(r.factor_of_safety.has_value());
+  const FactorOfSafety& f = *r.factor_of_safety;
+  ASSERT_TRUE(f.collapse.has_value());
+  std::printf("F in [%.6f, %.6f], expected %.6f\n", f.lower, f.collapse->failed, expected);
+  EXPECT_LE(f.lower, expected * (1.0 + 1e-6));
+  EXPECT_GE(f.collapse->failed, expected * (1.0 - 1e-6));
+  EXPECT_LE(f.collapse->failed - f.lower, 1.1e-3 * f.collapse->failed);
+  EXPECT_FALSE(f.collapse->mechanism.empty());
+  EXPECT_GT(f.trials.size(), 2u);
+}
+
+TEST(FactorOfSafety, CohesionlessBlockOnAnInclineIsTanPhiOverTanAlpha) {
+  Incline in;
+  in.slope_deg = 20.0;
+  in.friction_deg = 35.0;
+  expect_bracket(with_factor_of_safety(testing::incline_case(in)),
+                 std::tan(35.0 * kDeg) / std::tan(20.0 * kDeg));
+}
+
+TEST(FactorOfSafety, CohesiveBlockOnAnInclineFollowsLimitEquilibrium) {
+  Incline in;
+  in.slope_deg = 30.0;
+  in.friction_deg = 20.0;
+  CaseSpec c = testing::incline_case(in);
+  const double cohesion = 5e3;  // [Pa]
+  c.joint_materials[0].strength->cohesion = Softening::constant(cohesion);
+  const double w = in.weight();
+  const double a = in.slope_deg * kDeg;
+  const double expected =
+      (cohesion * in.width + w * std::cos(a) * std::tan(in.friction_deg * kDeg)) /
+      (w * std::sin(a));
+  expect_bracket(with_factor_of_safety(c), expected);
+}
+
+TEST(FactorOfSafety, ABlockOnALevelPlaneIsStableForEveryFactor) {
+  Incline in;
+  in.slope_deg = 0.0;
+  const PlasticResult r = with_factor_of_safety(testing::incline_case(in), 3.0);
+  ASSERT_TRUE(r.factor_of_safety.has_value());
+  EXPECT_FALSE(r.factor_of_safety->collapse.has_value());
+  EXPECT_FALSE(r.factor_of_safety->undecided);
+  EXPECT_NEAR(r.factor_of_safety->lower, 3.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace bimrock
