@@ -145,6 +145,18 @@ stages: [{name: gravity, loads: {gravity: [0, -1]}}]
   EXPECT_EQ(without_stages.item, "factor_of_safety");
 }
 
+TEST(CaseReader, ASeismicLoadAddsItsCoefficientsToTheBodyForce) {
+  const Case c = read_case_string(kMinimal +
+                                      "stages:\n  - name: quake\n    loads: {gravity: [0, "
+                                      "-1], seismic: {kh: 0.15, kv: -0.05}}\n",
+                                  "case.yaml");
+  const Vec2 g = c.spec.stages.at(0).loads.gravity;
+  EXPECT_DOUBLE_EQ(g.x(), 0.15);
+  EXPECT_DOUBLE_EQ(g.y(), -1.0 + 0.05);  // kv < 0 acts upwards
+  const Failure f = error_of(kMinimal + "loads: {seismic: {kh: 3}}\n");
+  EXPECT_EQ(f.item, "loads.seismic.kh");
+}
+
 TEST(CaseReaderErrors, PlasticAnalysisOptionsOutOfRangeAreRejected) {
   const Failure wide = error_of(kMinimal + "analysis: {bracket_tolerance: 0.6}\n");
   EXPECT_EQ(wide.item, "analysis.bracket_tolerance");

@@ -74,5 +74,20 @@ TEST(FactorOfSafety, ABlockOnALevelPlaneIsStableForEveryFactor) {
   EXPECT_NEAR(r.factor_of_safety->lower, 3.0, 1e-12);
 }
 
+// A pseudo-static earthquake on a block on a level joint (cohesionless, phi): the horizontal
+// inertial force kh W is resisted by (1 + kv) W tan(phi) (kv downwards), so
+// F = (1 + kv) tan(phi) / kh (limit equilibrium of a sliding block).
+TEST(FactorOfSafety, SeismicLoadOnALevelBlockFollowsLimitEquilibrium) {
+  Incline in;
+  in.slope_deg = 0.0;
+  in.friction_deg = 30.0;
+  CaseSpec c = testing::incline_case(in);
+  const double kh = 0.2, kv = 0.1;
+  StageSpec quake{"earthquake", {}, 4, std::nullopt, {0, "stages[1]"}};
+  quake.loads.gravity = Vec2(kh, -kv);  // what loads.seismic {kh, kv} adds (case_loading.cpp)
+  c.stages.push_back(quake);
+  expect_bracket(with_factor_of_safety(c), (1.0 + kv) * std::tan(30.0 * kDeg) / kh);
+}
+
 }  // namespace
 }  // namespace bimrock

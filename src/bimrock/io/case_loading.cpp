@@ -50,6 +50,16 @@ LoadsSpec read_loads(const Value& v) {
     loads.points = read_list(*p, read_point_load);
   if (const auto t = m.find("tractions"))
     loads.tractions = read_list(*t, read_traction);
+  if (const auto s = m.find("seismic")) {
+    // Pseudo-static earthquake: kh times the weight along +x, kv times the weight downwards,
+    // added to the body force of `gravity` (in units of the unit weight).
+    const Map k = open(*s, "loads.seismic");
+    const auto coefficient = [&](const char* key) {
+      const auto x = k.find(key);
+      return x ? bounded(*x, 2.0, "times the weight", "beyond any earthquake recorded") : 0.0;
+    };
+    loads.gravity += Vec2(coefficient("kh"), -coefficient("kv"));
+  }
   return loads;
 }
 
