@@ -19,6 +19,7 @@
 
 #include <bimrock/io/gmsh_mesh.hpp>
 #include <bimrock/io/yaml_value.hpp>
+#include <bimrock/model/limits.hpp>
 
 namespace bimrock {
 namespace {
@@ -187,10 +188,6 @@ double positive(const Value& v) {
     v.fail("must be positive");
   return d;
 }
-
-/// The largest coordinate magnitude [m]. Exact geometry (CGAL) squares and multiplies
-/// coordinates; near 1e308 that overflows and CGAL crashes, so coordinates are bounded here.
-constexpr double kMaxCoordinate = 1e9;
 
 /// A point [x, y] that is a position in the model [m]: each coordinate within kMaxCoordinate.
 Vec2 location(const Value& v) {

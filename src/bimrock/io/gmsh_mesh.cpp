@@ -18,6 +18,7 @@
 #include <utility>
 
 #include <bimrock/model/errors.hpp>
+#include <bimrock/model/limits.hpp>
 
 namespace bimrock {
 namespace {
@@ -333,6 +334,11 @@ void read_nodes(Cursor& c, Parsed& p) {
       const Words w = c.words(section);
       w.expect_count(3, item, "its coordinates 'x y z'", true);  // parametric u, v may follow
       Node node{{w.real(0, item, "x"), w.real(1, item, "y")}, w.real(2, item, "z"), c.line()};
+      if (std::abs(node.xy.x()) > kMaxCoordinate || std::abs(node.xy.y()) > kMaxCoordinate) {
+        w.fail(item, "coordinates must lie within +-" + number(kMaxCoordinate) + " m, not [" +
+                         number(node.xy.x()) + ", " + number(node.xy.y()) +
+                         "] (as a case file's; are the units metres?)");
+      }
       if (!p.nodes.emplace(t, node).second)
         w.fail(item, "the node tag is used twice");
     }
