@@ -118,6 +118,9 @@ TEST(Polygon, FirstDuplicateVertexAgreesWithAllPairs) {
 
 TEST(Polygon, FirstDuplicateVertexOfIdenticalOrFewVertices) {
   EXPECT_EQ(first_duplicate_vertex(std::vector<Vec2>(1000, Vec2(3, 4)), 0.0), 1u);
+  std::vector<Vec2> repeated(100000, Vec2(1, 1));  // tol 0: the coarse cells, all in one
+  repeated[0] = {0, 0};
+  EXPECT_EQ(first_duplicate_vertex(repeated, 0.0), 2u);
   EXPECT_EQ(first_duplicate_vertex(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}}, 0.5), 3u);
   EXPECT_EQ(first_duplicate_vertex(std::vector<Vec2>{{0, 0}, {1, 0}, {0, 1}, {1, 0.4}}, 0.5), 3u);
 }

@@ -108,9 +108,12 @@ std::size_t first_duplicate_vertex(std::span<const Vec2> v, double tol) {
       const Entry from{e.cx + dx, e.cy - 1, 0};
       while (c < cells.size() && cells[c] < from)
         ++c;
-      for (std::size_t k = c;
-           k < cells.size() && cells[k].cx == e.cx + dx && cells[k].cy <= e.cy + 1; ++k) {
-        if (cells[k].index < e.index && e.index < first && close(cells[k].index, e.index))
+      // (Once e is a duplicate, or a later vertex than one found, its scan ends: the coarse
+      // cells, without the 5 per cell, then stay linear for repeated vertices too.)
+      for (std::size_t k = c; e.index < first && k < cells.size() && cells[k].cx == e.cx + dx &&
+                              cells[k].cy <= e.cy + 1;
+           ++k) {
+        if (cells[k].index < e.index && close(cells[k].index, e.index))
           first = e.index;
       }
     }
