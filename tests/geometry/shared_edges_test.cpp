@@ -73,5 +73,42 @@ TEST(SharedEdges, CandidatePairsGrowLinearlyOnAGrid) {
   EXPECT_EQ(pairs.size(), 2u * 39 * 40 + 2u * 39 * 39);
 }
 
+// The first polygon holding each point, against a search of every polygon in order (what the
+// model builder did per point): points inside bricks, on their edges and corners (held by 2-4
+// bricks, the first of which wins), within tol outside the wall and beyond it.
+TEST(PointLocation, FirstContainingAgreesWithASearchOfEveryPolygon) {
+  const auto blocks = brick_pattern(12, 9, 1.0, 0.5, Stagger::rows);
+  const double tol = 1e-9;
+  std::vector<Vec2> points;
+  for (int i = -2; i <= 50; ++i) {
+    for (int j = -2; j <= 38; ++j)
+      points.push_back({0.25 * i, 0.125 * j});  // a lattice through edges and corners
+  }
+  points.push_back({12.0 + 0.5 * tol, 1.0});  // within tol of the right side
+  points.push_back({12.0 + 2.0 * tol, 1.0});  // beyond it
+  const std::vector<int> first = first_containing(blocks, points, tol);
+  ASSERT_EQ(first.size(), points.size());
+  int inside = 0;
+  int shared = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    int expected = -1;
+    int holders = 0;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+      if (contains(blocks[b], points[k], tol)) {
+        expected = expected < 0 ? static_cast<int>(b) : expected;
+        ++holders;
+      }
+    }
+    EXPECT_EQ(first[k], expected) << points[k].transpose();
+    inside += expected >= 0 ? 1 : 0;
+    shared += holders > 1 ? 1 : 0;
+  }
+  EXPECT_GT(shared, 300);  // the lattice does test points held by several bricks
+  EXPECT_LT(inside, static_cast<int>(points.size()));  // and points held by none
+  EXPECT_EQ(first[points.size() - 2],
+            first_containing(blocks, std::vector<Vec2>{{11.9, 1.0}}, tol)[0]);
+  EXPECT_EQ(first.back(), -1);
+}
+
 }  // namespace
 }  // namespace bimrock

@@ -59,6 +59,37 @@ std::vector<std::pair<int, int>> candidate_pairs(std::span<const Polygon> polygo
   return pairs;
 }
 
+std::vector<int> first_containing(std::span<const Polygon> polygons, std::span<const Vec2> points,
+                                  double tol) {
+  std::vector<int> first(points.size(), -1);
+  if (polygons.empty() || points.empty())
+    return first;
+  std::vector<Box> blocks;
+  blocks.reserve(polygons.size());
+  for (std::size_t k = 0; k < polygons.size(); ++k) {
+    const BBox b = bbox_of(polygons[k]);
+    double lo[2] = {b.lo.x() - tol, b.lo.y() - tol};
+    double hi[2] = {b.hi.x() + tol, b.hi.y() + tol};
+    blocks.emplace_back(lo, hi, k);
+  }
+  std::vector<Box> at;
+  at.reserve(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    double p[2] = {points[k].x(), points[k].y()};
+    at.emplace_back(p, p, k);
+  }
+  auto report = [&](const Box& block, const Box& point) {
+    const int b = static_cast<int>(block.handle());
+    int& f = first[point.handle()];
+    if ((f < 0 || b < f) && contains(polygons[b], points[point.handle()], tol))
+      f = b;
+  };
+  // Closed boxes: a point on a block's bounding box (a vertex, an edge) is a candidate.
+  CGAL::box_intersection_d(blocks.begin(), blocks.end(), at.begin(), at.end(), report,
+                           std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED);
+  return first;
+}
+
 std::vector<SharedEdge> find_shared_edges(std::span<const Polygon> polygons, double tol) {
   std::vector<SharedEdge> shared;
   for (const auto& [i, j] : candidate_pairs(polygons, tol)) {
