@@ -4,7 +4,10 @@
 DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
   libeigen3-dev libsuitesparse-dev libcgal-dev libyaml-cpp-dev libcli11-dev libfmt-dev \
   nlohmann-json3-dev libglpk-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev \
-  libopenblas0-pthread python3-meshio python3-numpy
+  libopenblas0-pthread python3-meshio python3-numpy \
+  clang libclang-rt-14-dev
+# clang and its compiler runtime (libFuzzer, ASan, UBSan: libclang-rt-14-dev, which clang only
+# recommends) build the fuzz targets (docs/fuzzing.md).
 # Optional peers the benchmarks compare with, installed by `make bench` only (bench/CMakeLists.txt
 # builds without them): Siconos Numerics' LCP solvers.
 BENCH_PACKAGES := libsiconos-numerics-dev
@@ -13,7 +16,7 @@ JOBS ?= $(shell nproc)
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEMO_OUT ?= results/jointed_rock_mass
 
-.PHONY: all deps bench-deps build build-asan test demo bench format clean
+.PHONY: all deps bench-deps build build-asan build-fuzz test fuzz-long demo bench format clean
 
 all: build
 
@@ -43,9 +46,25 @@ build-asan: deps
 	cmake --preset asan-ubsan
 	cmake --build --preset asan-ubsan -j $(JOBS)
 
-test: build build-asan
+# The fuzz targets only (not the solver's layers): the fuzz preset's build lists them.
+build-fuzz: deps
+	cmake --preset fuzz
+	cmake --build --preset fuzz -j $(JOBS)
+
+test: build build-asan build-fuzz
 	ctest --preset release
 	ctest --preset asan-ubsan
+	ctest --preset fuzz
+
+# Each fuzz target for FUZZ_RUNS executions (docs/fuzzing.md), one after the other, at the
+# lowest priority; a finding stops it with the input in build/fuzz/fuzz/<target>/findings/.
+FUZZ_RUNS ?= 1000000
+FUZZ_TARGETS := case_reader block_generation gmsh_mesh
+fuzz-long: build-fuzz
+	@for t in $(FUZZ_TARGETS); do \
+	  echo "== fuzz target $$t: $(FUZZ_RUNS) executions"; \
+	  nice -n 19 build/fuzz/fuzz/$$t/run.sh -runs=$(FUZZ_RUNS) || exit 1; \
+	done
 
 DEMO_CASES := case1_vertical case2_horizontal case3_biaxial
 
@@ -69,7 +88,7 @@ bench: bench-deps
 	./build/bench/bench/bimrock_bench
 
 format:
-	find src tests bench -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+	find src tests bench fuzz -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
 
 clean:
 	rm -rf build

@@ -96,5 +96,34 @@ TEST(MeshCommand, BadGeometryIsNamedWithItsLine) {
   std::filesystem::remove_all(spacing.folder);
 }
 
+// The mesh command keeps to limits.output_mb as a run does, before writing anything. The 12
+// blocks of the grid above write a blocks.vtu of about 18 kB (48 vertices, 2 points for each of
+// the 17 interfaces and 3 supports, 32 cells) beside the 1 MB allowed for the picture and the
+// summary: just over 1 MB, within 1.1 MB.
+TEST(MeshCommand, KeepsToTheOutputLimit) {
+  const std::string grid = kMaterials + R"(domain:
+  outline: [[0, 0], [6, 0], [6, 4], [0, 4]]
+  material: rock
+  joint_sets:
+    - {material: horizontal, dip: 0, spacing: 1.0, origin: [0, 1]}
+    - {material: vertical, dip: 90, spacing: 2.0, origin: [2, 0]}
+)";
+  const testing::CommandResult refused =
+      testing::run_bimrock("mesh", grid + "limits: {output_mb: 1.0}\n", "-o mesh");
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_EQ(refused.err.rfind("error: case.yaml:16: output: would generate about 1.02 MB of "
+                              "blocks.vtu and pictures, more than limits.output_mb = 1",
+                              0),
+            0u)
+      << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(refused.folder / "mesh"));
+  const testing::CommandResult accepted =
+      testing::run_bimrock("mesh", grid + "limits: {output_mb: 1.1}\n", "-o mesh");
+  EXPECT_EQ(accepted.exit_code, 0) << accepted.err;
+  EXPECT_TRUE(std::filesystem::exists(accepted.folder / "mesh" / "blocks.vtu"));
+  std::filesystem::remove_all(refused.folder);
+  std::filesystem::remove_all(accepted.folder);
+}
+
 }  // namespace
 }  // namespace bimrock

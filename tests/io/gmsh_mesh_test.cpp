@@ -219,5 +219,23 @@ TEST(GmshMesh, MalformedFilesAreNamedWithTheirLine) {
               HasSubstr("m.msh:4: $Comments: the section is not closed by '$EndComments'"));
 }
 
+// Node coordinates are bounded as a case file's points are (+-1e9 m): beyond, exact geometry
+// overflows. 1e9 itself is accepted, the next power of ten (a mesh drawn in mm of a 1e6 m
+// region, say) is refused with the node's line and tag.
+TEST(GmshMesh, NodeCoordinatesAreBoundedLikeACaseFilesPoints) {
+  const auto nodes = [](const std::string& second, const std::string& third) {
+    return "$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n0 0 0\n" + second + "\n" + third + "\n$EndNodes\n";
+  };
+  const GmshMesh big =
+      parse_gmsh_mesh(kHead + kEntities + nodes("1e9 -1e9 0", "0 1e9 0") + kElements, "m.msh");
+  ASSERT_EQ(big.cells.size(), 1u);
+  EXPECT_EQ(big.cells[0].polygon.vertices[1], Vec2(1e9, -1e9));
+  EXPECT_THAT(error_parsing(kHead + kEntities + nodes("1e10 0 0", "0 1 0") + kElements),
+              HasSubstr("m.msh:16: node 2: coordinates must lie within +-1e+09 m, not [1e+10, 0]"));
+  EXPECT_THAT(
+      error_parsing(kHead + kEntities + nodes("1 0 0", "0 -1.0e308 0") + kElements),
+      HasSubstr("m.msh:17: node 3: coordinates must lie within +-1e+09 m, not [0, -1e+308]"));
+}
+
 }  // namespace
 }  // namespace bimrock

@@ -92,8 +92,10 @@ int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
 int check(const std::string& case_file, bool quiet) {
   const bimrock::Case c = bimrock::read_case_file(case_file);
   const bimrock::Model model = bimrock::build_model(c.spec);
-  if (!quiet)
+  if (!quiet) {
     bimrock::print_model(model);
+    bimrock::print_memory_estimate(model);
+  }
   return kOk;
 }
 

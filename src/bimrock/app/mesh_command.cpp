@@ -1,6 +1,8 @@
 #include "bimrock/app/mesh_command.hpp"
 
 #include <map>
+#include <string>
+#include <vector>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -9,21 +11,35 @@
 #include <bimrock/io/block_picture.hpp>
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/io/output_folder.hpp>
+#include <bimrock/io/results_writer.hpp>
 #include <bimrock/io/run_summary.hpp>
 #include <bimrock/io/vtk_writer.hpp>
+#include <bimrock/model/limits.hpp>
 
 namespace bimrock {
 
 void run_mesh(const std::string& case_file, const std::filesystem::path& out, bool quiet) {
   const Case c = read_case_file(case_file);
   const Model model = build_model(c.spec);
+  // The output within limits.output_mb, checked before anything is written, as `run` does.
+  const double mb = (estimate_vtu_step_bytes(model) + 1e6) / 1e6;  // 1 MB: picture, summary
+  if (mb > c.spec.limits.output_mb) {
+    const auto line = c.spec.limits.lines.find("limits.output_mb");
+    throw InputError(c.spec.file, line == c.spec.limits.lines.end() ? 0 : line->second, "output",
+                     limit_message(mb, c.spec.limits.output_mb, "output_mb",
+                                   "MB of blocks.vtu and pictures", "give fewer blocks"));
+  }
   StagingFolder folder(out);
   ElasticSolution undisplaced;
   undisplaced.u = Eigen::VectorXd::Zero(model.n_dofs());
   evaluate_fields(model, undisplaced);
   write_vtu(model, undisplaced, {}, folder.path() / "blocks.vtu");
-  write_block_picture(model, {model.title.empty() ? "blocks" : model.title, {}, 0.05, {}, 1400},
-                      folder.path() / "blocks");
+  // No picture of more blocks than a run draws (a grey blur, slow to draw): ParaView then.
+  const bool picture = model.n_blocks() <= kMaxPictureBlocks;
+  if (picture) {
+    write_block_picture(model, {model.title.empty() ? "blocks" : model.title, {}, 0.05, {}, 1400},
+                        folder.path() / "blocks");
+  }
 
   std::map<std::string, int> blocks_by_material, interfaces_by_material;
   for (const Block& b : model.blocks)
@@ -42,6 +58,9 @@ void run_mesh(const std::string& case_file, const std::filesystem::path& out, bo
     min_area = std::min(min_area, b.area);
     max_area = std::max(max_area, b.area);
   }
+  std::vector<std::string> files = {"blocks.vtu"};
+  if (picture)
+    files.insert(files.end(), {"blocks.png", "blocks.svg"});
   const nlohmann::json summary = {{"program", "bimrock mesh"},
                                   {"case", case_file},
                                   {"units", "SI: m"},
@@ -53,7 +72,7 @@ void run_mesh(const std::string& case_file, const std::filesystem::path& out, bo
                                   {"largest_block_m2", max_area},
                                   {"blocks_by_material", blocks_by_material},
                                   {"interfaces_by_joint_material", interfaces_by_material},
-                                  {"files", {"blocks.vtu", "blocks.png", "blocks.svg"}}};
+                                  {"files", files}};
   write_json(summary, folder.path() / "summary.json");
   folder.commit();
   if (quiet)
@@ -65,7 +84,9 @@ void run_mesh(const std::string& case_file, const std::filesystem::path& out, bo
       model.n_interfaces() - supports, supports);
   for (const auto& [name, n] : interfaces_by_material)
     fmt::print("  {:>6} interfaces of {}\n", n, name);
-  fmt::print("blocks written to {}/ (blocks.vtu for ParaView, blocks.png)\n", out.string());
+  fmt::print("blocks written to {}/ (blocks.vtu for ParaView{})\n", out.string(),
+             picture ? std::string(", blocks.png")
+                     : fmt::format("; no picture of more than {} blocks", kMaxPictureBlocks));
 }
 
 }  // namespace bimrock

@@ -1,8 +1,11 @@
 #include "bimrock/app/report.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include <fmt/core.h>
+
+#include <bimrock/analysis/memory_estimate.hpp>
 
 namespace bimrock {
 
@@ -14,6 +17,20 @@ void print_model(const Model& model) {
              model.source_file, model.n_blocks(), model.n_interfaces() - supports, supports,
              model.n_dofs());
   fmt::print("length tolerance {:.3g} m; the case is valid\n", model.tolerance);
+}
+
+void print_memory_estimate(const Model& model) {
+  const MemoryEstimate e = estimate_memory(model);
+  constexpr double kMiB = 1048576.0;
+  const std::string peak =
+      model.stages.empty()
+          ? fmt::format("about {:.0f} MiB", e.peak_bytes / kMiB)
+          : fmt::format("from {:.0f} to about {:.0f} MiB, the more the larger its plastic zone",
+                        e.peak_bytes / kMiB, e.nonlinear_bytes / kMiB);
+  fmt::print(
+      "memory: the run's peak {} ({:.0f} MiB now with the model; K and its Cholesky factor of "
+      "about {} non-zeros {:.1f} MiB)\n",
+      peak, e.now_bytes / kMiB, e.factor_nonzeros, e.solve_bytes / kMiB);
 }
 
 namespace {

@@ -8,6 +8,8 @@
 namespace bimrock {
 
 void print_model(const Model& model);
+/// `check`: the estimated peak memory of a run of the model (analysis/memory_estimate.hpp).
+void print_memory_estimate(const Model& model);
 void print_summary(const Model& model, const ElasticSolution& solution,
                    const std::filesystem::path& out);
 

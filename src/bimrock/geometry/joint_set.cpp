@@ -202,9 +202,9 @@ std::vector<JointTrace> generate_traces(const JointSet& set, int set_index, cons
     double a1 = 0.0;
     if (!clip_line(foot, t, grown, a0, a1))
       continue;
-    const auto add = [&](double b0, double b1) {
-      traces.push_back(
-          {{foot + b0 * t, foot + b1 * t}, set_index, static_cast<int>(k), set.material});
+    // (k copied: clang 14, of the fuzz build, cannot capture a structured binding.)
+    const auto add = [&, joint = static_cast<int>(k)](double b0, double b1) {
+      traces.push_back({{foot + b0 * t, foot + b1 * t}, set_index, joint, set.material});
     };
     if (persistent) {
       add(a0, a1);

@@ -1,6 +1,9 @@
 #include <bimrock/geometry/polygon.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace bimrock {
 
@@ -48,6 +51,76 @@ bool contains(const Polygon& poly, const Vec2& p, double tol) {
   return true;
 }
 
+std::size_t first_duplicate_vertex(std::span<const Vec2> v, double tol) {
+  const std::size_t n = v.size();
+  const auto close = [&](std::size_t k, std::size_t m) { return (v[k] - v[m]).norm() <= tol; };
+  // A few vertices (every block but an imported outline): all pairs, no allocation.
+  constexpr std::size_t kAllPairsUpTo = 32;
+  const BBox box = bbox_of(v);
+  const double extent = std::max(box.hi.x() - box.lo.x(), box.hi.y() - box.lo.y());
+  if (n <= kAllPairsUpTo || !std::isfinite(extent)) {
+    for (std::size_t m = 1; m < n; ++m) {
+      for (std::size_t k = 0; k < m; ++k) {
+        if (close(k, m))
+          return m;
+      }
+    }
+    return n;
+  }
+  if (extent == 0.0)
+    return 1;  // every vertex is the first one
+  // Cells of side h a little over tol (rounding of the cell index may not split a close pair
+  // more than one cell apart): a vertex's close vertices lie in its 3 x 3 cells. A cell holds
+  // at most 4 vertices more than tol apart (its four quarters are narrower than tol), so among
+  // the first 5 vertices of a cell two are close: the later ones cannot be the first duplicate,
+  // nor its earlier partner, and are dropped. So each vertex meets at most 45 others: O(n log n)
+  // for the sort, O(n) after it. A tolerance below 2^-40 of the extent (0 in tests) makes the cells
+  // larger than tol: still exact, without that bound.
+  constexpr double kMaxCells = 0x1p40;
+  const bool fine = tol > 0.0 && extent / (1.01 * tol) <= kMaxCells;
+  const double h = fine ? 1.01 * tol : extent / kMaxCells;
+  const std::size_t per_cell = fine ? 5 : n;
+  struct Entry {
+    std::int64_t cx, cy;
+    std::size_t index;
+    auto operator<=>(const Entry&) const = default;
+  };
+  std::vector<Entry> cells(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    cells[k] = {static_cast<std::int64_t>(std::floor((v[k].x() - box.lo.x()) / h)),
+                static_cast<std::int64_t>(std::floor((v[k].y() - box.lo.y()) / h)), k};
+  }
+  std::sort(cells.begin(), cells.end());
+  std::size_t kept = 0;
+  for (std::size_t k = 0, run = 0; k < n; ++k) {
+    run = k > 0 && cells[k].cx == cells[k - 1].cx && cells[k].cy == cells[k - 1].cy ? run + 1 : 0;
+    if (run < per_cell)
+      cells[kept++] = cells[k];
+  }
+  cells.resize(kept);
+  // The cells are visited in order, so the first candidate of each column dx (cell
+  // (cx + dx, cy - 1)) only moves forward: one cursor per column.
+  std::size_t first = n;
+  std::size_t cursor[3] = {0, 0, 0};
+  for (const Entry& e : cells) {
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      std::size_t& c = cursor[dx + 1];
+      const Entry from{e.cx + dx, e.cy - 1, 0};
+      while (c < cells.size() && cells[c] < from)
+        ++c;
+      // (Once e is a duplicate, or a later vertex than one found, its scan ends: the coarse
+      // cells, without the 5 per cell, then stay linear for repeated vertices too.)
+      for (std::size_t k = c; e.index < first && k < cells.size() && cells[k].cx == e.cx + dx &&
+                              cells[k].cy <= e.cy + 1;
+           ++k) {
+        if (cells[k].index < e.index && close(cells[k].index, e.index))
+          first = e.index;
+      }
+    }
+  }
+  return first;
+}
+
 PolygonCheck check_convex_polygon(const Polygon& p, double tol) {
   const std::size_t n = p.size();
   if (n < 3)
@@ -56,12 +129,8 @@ PolygonCheck check_convex_polygon(const Polygon& p, double tol) {
     if (!std::isfinite(p.vertices[k].x()) || !std::isfinite(p.vertices[k].y()))
       return {PolygonDefect::not_finite, k};
   }
-  for (std::size_t k = 0; k < n; ++k) {
-    for (std::size_t m = k + 1; m < n; ++m) {
-      if ((p.vertices[k] - p.vertices[m]).norm() <= tol)
-        return {PolygonDefect::duplicate_vertex, m};
-    }
-  }
+  if (const std::size_t m = first_duplicate_vertex(p.vertices, tol); m < n)
+    return {PolygonDefect::duplicate_vertex, m};
   const double area = signed_area(p);
   BBox box = bbox_of(p);
   if (std::abs(area) <= tol * box.diagonal())

@@ -1,6 +1,7 @@
 #pragma once
 /// @file Convex polygons: the shape of a block. Vertices counter-clockwise, in metres.
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,11 @@ struct PolygonCheck {
   PolygonDefect defect = PolygonDefect::none;
   std::size_t vertex = 0;  ///< the offending vertex (0-based), where one can be named
 };
+
+/// The first vertex m that lies within tol of an earlier one (v.size() if none), in
+/// O(n log n): check_convex_polygon's duplicate test, which a block of 1e6 vertices must pass.
+/// The vertices must be finite.
+std::size_t first_duplicate_vertex(std::span<const Vec2> v, double tol);
 
 /// Checks that p is a convex, counter-clockwise polygon with at least 3 distinct vertices.
 /// Collinear consecutive vertices (a T-junction on a straight side) are allowed.

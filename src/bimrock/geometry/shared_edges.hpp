@@ -42,6 +42,12 @@ std::vector<SharedEdge> find_shared_edges(std::span<const Polygon> polygons, dou
 std::vector<BoundaryEdge> find_boundary_edges(std::span<const Polygon> polygons,
                                               std::span<const SharedEdge> shared, double tol);
 
+/// For each point, the first polygon (the lowest index) that contains it within tol
+/// (contains()), or -1 if none. Candidates by box intersection as above: O((n + m) log^2 + k),
+/// not n x m.
+std::vector<int> first_containing(std::span<const Polygon> polygons, std::span<const Vec2> points,
+                                  double tol);
+
 /// Pairs of convex polygons whose interiors overlap by more than tol (separating axis test).
 std::vector<std::pair<int, int>> find_overlaps(std::span<const Polygon> polygons, double tol);
 

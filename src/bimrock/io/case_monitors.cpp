@@ -3,6 +3,7 @@
 #include <bimrock/io/case_sections.hpp>
 
 #include <cstddef>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,16 +38,16 @@ std::string file_name_part(const Value& v) {
 
 std::vector<MonitorSpec> read_monitors(const Value& v) {
   std::vector<MonitorSpec> monitors;
+  std::map<std::string, std::size_t> named;  // each name's monitor (not a search: 1e5 monitors)
   for (const Value& element : v.list()) {
     const Map m = open(element, "monitors[]");
     const Value n = m.at("name");
     MonitorSpec monitor{file_name_part(n), location(m.at("at")), element.ref()};
     // Monitors are looked up by name (results columns, displacement control): names are unique.
-    for (const MonitorSpec& other : monitors) {
-      if (other.name == monitor.name) {
-        n.fail("monitor name '" + monitor.name + "' already used by " + other.source.item +
-               " (line " + std::to_string(other.source.line) + ")");
-      }
+    if (const auto [other, fresh] = named.emplace(monitor.name, monitors.size()); !fresh) {
+      const SourceRef& first = monitors[other->second].source;
+      n.fail("monitor name '" + monitor.name + "' already used by " + first.item + " (line " +
+             std::to_string(first.line) + ")");
     }
     monitors.push_back(std::move(monitor));
   }

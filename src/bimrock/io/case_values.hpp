@@ -13,16 +13,13 @@
 
 #include <bimrock/geometry/vec2.hpp>
 #include <bimrock/io/yaml_value.hpp>
+#include <bimrock/model/limits.hpp>
 
 namespace bimrock::case_file {
 
 using yaml::Entry;
 using yaml::Map;
 using yaml::Value;
-
-/// The largest coordinate magnitude [m]. Exact geometry (CGAL) squares and multiplies
-/// coordinates; near 1e308 that overflows and CGAL crashes, so coordinates are bounded here.
-constexpr double kMaxCoordinate = 1e9;
 
 double positive(const Value& v);
 double non_negative(const Value& v);

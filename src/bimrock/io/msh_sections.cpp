@@ -1,9 +1,14 @@
 #include <bimrock/io/msh_sections.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <string_view>
+
+#include <fmt/core.h>
+
+#include <bimrock/model/limits.hpp>
 
 namespace bimrock::msh {
 namespace {
@@ -136,6 +141,11 @@ void read_nodes(Cursor& c, Parsed& p) {
       const Words w = c.words(section);
       w.expect_count(3, item, "its coordinates 'x y z'", true);  // parametric u, v may follow
       Node node{{w.real(0, item, "x"), w.real(1, item, "y")}, w.real(2, item, "z"), c.line()};
+      if (std::abs(node.xy.x()) > kMaxCoordinate || std::abs(node.xy.y()) > kMaxCoordinate) {
+        w.fail(item, fmt::format("coordinates must lie within +-{:g} m, not [{:g}, {:g}] (as a "
+                                 "case file's; are the units metres?)",
+                                 kMaxCoordinate, node.xy.x(), node.xy.y()));
+      }
       if (!p.nodes.emplace(t, node).second)
         w.fail(item, "the node tag is used twice");
     }

@@ -97,16 +97,29 @@ void write_factor_of_safety(const Model& model, const PlasticResult& result, con
 
 }  // namespace
 
-double estimate_output_bytes(const Model& model, const OutputOptions& options) {
+namespace {
+
+/// The points of a VTK step: the blocks' vertices and two per interface.
+double vtu_points(const Model& model) {
   double vertices = 0.0;
   for (const Block& b : model.blocks)
     vertices += static_cast<double>(b.polygon.vertices.size());
-  const double interfaces = model.n_interfaces();
-  const double points = vertices + 2.0 * interfaces;
-  const double cells = model.n_blocks() + interfaces;
+  return vertices + 2.0 * model.n_interfaces();
+}
+
+}  // namespace
+
+double estimate_vtu_step_bytes(const Model& model) {
+  const double cells = model.n_blocks() + model.n_interfaces();
   // A .vtu step (vtk_writer.cpp), Base64 (4/3): per point its coordinates, displacement and
   // connectivity (7 x 8 bytes); per cell its offset, type and 20 numbers of cell data.
-  const double step = 4.0 / 3.0 * (56.0 * points + 169.0 * cells) + 4096.0;
+  return 4.0 / 3.0 * (56.0 * vtu_points(model) + 169.0 * cells) + 4096.0;
+}
+
+double estimate_output_bytes(const Model& model, const OutputOptions& options) {
+  const double points = vtu_points(model);
+  const double cells = model.n_blocks() + model.n_interfaces();
+  const double step = estimate_vtu_step_bytes(model);
   double increments = 0.0;
   for (const Stage& s : model.stages)
     increments += s.increments;

@@ -28,6 +28,9 @@ inline constexpr int kMaxPictureBlocks = 20000;
 /// Throws InputError when estimate_output_bytes() exceeds the case's limits.output_mb.
 void check_output_size(const Model& model, const Case& c);
 
+/// The size of one VTK step of `model` (a .vtu of its blocks and interfaces) [bytes].
+[[nodiscard]] double estimate_vtu_step_bytes(const Model& model);
+
 /// Writes the results of an elastic run into `out` (replacing earlier results there).
 void write_elastic_results(const Model& model, const ElasticSolution& solution,
                            const OutputOptions& options, const std::filesystem::path& out);

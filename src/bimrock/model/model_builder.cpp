@@ -39,6 +39,7 @@ class Builder {
     add_blocks();
     add_interfaces();
     add_supports();
+    locate_points();
     add_loads();
     add_monitors();
     add_stages();
@@ -325,10 +326,32 @@ class Builder {
     }
   }
 
+  // The block of every point of a load or monitor (the first in the blocks' order that holds
+  // it), found at once by box intersection: a search of all blocks per point took 13.6 s for
+  // 20 000 monitors on 40 000 blocks, and would for as many stages with a point load each.
+  void locate_points() {
+    std::vector<Vec2> points;
+    const auto add = [&](const Vec2& p) {
+      if (std::isfinite(p.x()) && std::isfinite(p.y()))
+        points.push_back(p);
+    };
+    for (const PointLoadSpec& p : spec_.loads.points)
+      add(p.point);
+    for (const MonitorSpec& m : spec_.monitors)
+      add(m.point);
+    for (const StageSpec& st : spec_.stages) {
+      for (const PointLoadSpec& p : st.loads.points)
+        add(p.point);
+    }
+    const std::vector<int> blocks = first_containing(polygons_, points, model_.tolerance);
+    for (std::size_t k = 0; k < points.size(); ++k)
+      located_[{points[k].x(), points[k].y()}] = blocks[k];
+  }
+
   int block_at(const Vec2& p, const SourceRef& ref, const std::string& what) const {
     if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
       fail(ref, what + " is not a finite point");
-    const int b = find_block_containing(model_, p);
+    const int b = located_.at({p.x(), p.y()});
     if (b < 0)
       fail(ref, what + " (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) +
                     ") lies in no block");
@@ -378,12 +401,10 @@ class Builder {
         fail(st.source, "increments must be at least 1");
       if (st.control) {
         const DisplacementControlSpec& c = *st.control;
-        int monitor = -1;
-        for (std::size_t k = 0; k < model_.monitors.size(); ++k)
-          if (model_.monitors[k].name == c.monitor)
-            monitor = static_cast<int>(k);
-        if (monitor < 0)
+        const auto named = monitor_index_.find(c.monitor);
+        if (named == monitor_index_.end())
           fail(c.source, "unknown monitor '" + c.monitor + "'");
+        const int monitor = named->second;
         if (!std::isfinite(c.displacement) || c.displacement == 0.0)
           fail(c.source, "the prescribed displacement must be a non-zero number");
         if (!std::isfinite(c.direction.norm()) || c.direction.norm() == 0.0)
@@ -396,6 +417,7 @@ class Builder {
 
   void add_monitors() {
     for (const MonitorSpec& m : spec_.monitors) {
+      monitor_index_.emplace(m.name, static_cast<int>(model_.monitors.size()));
       model_.monitors.push_back(
           {m.name, block_at(m.point, m.source, "the monitor point"), m.point});
     }
@@ -409,6 +431,8 @@ class Builder {
   std::optional<GeneratedBlocks> generated_;
   int intact_ = -1;
   std::vector<SharedEdge> shared_;
+  std::map<std::pair<double, double>, int> located_;  // point -> block (locate_points)
+  std::map<std::string, int> monitor_index_;          // name -> index of Model::monitors
 };
 
 }  // namespace
