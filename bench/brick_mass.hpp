@@ -1,9 +1,9 @@
 #pragma once
-// The benchmark models: model/reference_cases.hpp's brick mass under gravity, elastic or with
+// The benchmark models: reference/reference_cases.hpp's brick mass under gravity, elastic or with
 // plastic joints.
 #include <cmath>
 
-#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 
 namespace bimrock::bench {
 

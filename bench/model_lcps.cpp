@@ -12,7 +12,7 @@
 #include <bimrock/assembly/yield_points.hpp>
 #include <bimrock/assembly/yield_system.hpp>
 #include <bimrock/assembly/yield_values.hpp>
-#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 #include "brick_mass.hpp"

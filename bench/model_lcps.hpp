@@ -41,7 +41,7 @@ struct ModelLcp {
 /// within 1 %.
 ModelLcp brick_mass_gravity_lcp(int n_blocks);
 
-/// (b) The jointed wall of model/reference_cases.hpp (wall_case: associated Mohr-Coulomb joints
+/// (b) The jointed wall of reference/reference_cases.hpp (wall_case: associated Mohr-Coulomb joints
 /// with a tension cut-off) pushed sideways to 1.3 times the sliding load of its top row in 10
 /// steps: the last increment the analysis carries before the collapse (a bisected step, from
 /// 0.91 to 0.975 of the sliding load), from the state the analysis reached (run_plastic_analysis,

@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
-#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 
 namespace bimrock {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <bimrock/analysis/memory_estimate.hpp>
 #include <bimrock/assembly/global_system.hpp>
-#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
 namespace bimrock {

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
-#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 
 namespace bimrock::testing {
 

@@ -1,5 +1,5 @@
 #pragma once
-// `bimrock bench`: whole analyses of generated models (model/reference_cases.hpp) at several
+// `bimrock bench`: whole analyses of generated models (reference/reference_cases.hpp) at several
 // sizes, each phase timed (median of the repetitions) with its peak memory, beside the physical
 // limit measured in the same run: CHOLMOD analyze + factorize + one solve of the same K alone.
 // One run is measured in bench_run.hpp, the runs summarized into the table in bench_table.hpp.

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 
 namespace bimrock::bench {
 

@@ -1,4 +1,4 @@
-#include <bimrock/model/reference_cases.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 
 #include <algorithm>
 #include <cmath>
