@@ -22,17 +22,20 @@ supports:
 loads: {gravity: [0, -1]}
 )";
 
-TEST(MeshCommand, TwoOrthogonalPersistentSetsCutTheExpectedGrid) {
-  // A 6 m x 4 m rectangle, horizontal joints every 1 m and vertical joints every 2 m (offset so
-  // that no joint runs along the outline): 4 rows x 3 columns = 12 blocks of 2 m^2, with
-  // 3 x 3 = 9 horizontal interfaces and 4 x 2 = 8 vertical ones (counted by hand).
-  const std::string text = kMaterials + R"(domain:
+// A 6 m x 4 m rectangle cut by horizontal joints every 1 m and vertical joints every 2 m.
+const std::string kGrid = kMaterials + R"(domain:
   outline: [[0, 0], [6, 0], [6, 4], [0, 4]]
   material: rock
   joint_sets:
     - {material: horizontal, dip: 0, spacing: 1.0, origin: [0, 1]}
     - {material: vertical, dip: 90, spacing: 2.0, origin: [2, 0]}
 )";
+
+TEST(MeshCommand, TwoOrthogonalPersistentSetsCutTheExpectedGrid) {
+  // A 6 m x 4 m rectangle, horizontal joints every 1 m and vertical joints every 2 m (offset so
+  // that no joint runs along the outline): 4 rows x 3 columns = 12 blocks of 2 m^2, with
+  // 3 x 3 = 9 horizontal interfaces and 4 x 2 = 8 vertical ones (counted by hand).
+  const std::string text = kGrid;
   const testing::CommandResult r = testing::run_bimrock("mesh", text, "-o mesh");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json s = testing::read_json(r.folder / "mesh" / "summary.json");
@@ -101,13 +104,7 @@ TEST(MeshCommand, BadGeometryIsNamedWithItsLine) {
 // the 17 interfaces and 3 supports, 32 cells) beside the 1 MB allowed for the picture and the
 // summary: just over 1 MB, within 1.1 MB.
 TEST(MeshCommand, KeepsToTheOutputLimit) {
-  const std::string grid = kMaterials + R"(domain:
-  outline: [[0, 0], [6, 0], [6, 4], [0, 4]]
-  material: rock
-  joint_sets:
-    - {material: horizontal, dip: 0, spacing: 1.0, origin: [0, 1]}
-    - {material: vertical, dip: 90, spacing: 2.0, origin: [2, 0]}
-)";
+  const std::string grid = kGrid;
   const testing::CommandResult refused =
       testing::run_bimrock("mesh", grid + "limits: {output_mb: 1.0}\n", "-o mesh");
   EXPECT_EQ(refused.exit_code, 2) << refused.err;
