@@ -10,6 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <bimrock/geometry/polygon.hpp>
+#include <bimrock/io/case_reader.hpp>
+#include <bimrock/model/model.hpp>
+
 #include "support/run_bimrock.hpp"
 #include "support/two_blocks_case.hpp"
 
@@ -191,6 +195,25 @@ TEST(Repro, HugeSpacingWithTracesGivesTheBlocksOfOneJoint) {
     EXPECT_EQ(blocks_of(p), 2) << spacing << ": " << p.out;
     fs::remove_all(p.folder);
   }
+}
+
+// A face of a rock slope's cut blocks on which CGAL's optimal convex partition returns a piece
+// with reflex corners (geometry/convex_partition.cpp): the blocks are convex (within the model's
+// length tolerance, as for every block) and tile the outline
+// less the tunnel, 5250 - 28.3646722 = 5221.6353278 m^2 (shoelace of the case's polygons). In
+// the Debug builds (ASan+UBSan) CGAL checks its partition and threw here; in Release nothing did.
+TEST(Repro, EveryCutBlockIsConvexWhereCgalsOptimalPartitionIsNot) {
+  const fs::path p =
+      fs::path(BIMROCK_SOURCE_DIR) / "tests/app/data/repro/partition_not_convex.yaml";
+  const Model model = build_model(read_case_file(p.string()).spec);
+  double area = 0.0;
+  for (const Block& b : model.blocks) {
+    EXPECT_EQ(check_convex_polygon(b.polygon, model.tolerance).defect, PolygonDefect::none)
+        << b.source.item;
+    area += b.area;
+  }
+  EXPECT_GT(model.n_blocks(), 100);
+  EXPECT_NEAR(area, 5221.6353278, 1e-6);
 }
 
 // ---- The output folder of `run`, checked before solving ----------------------------------------

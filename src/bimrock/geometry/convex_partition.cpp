@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <iterator>
+#include <string>
 #include <utility>
 
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/partition_2.h>
+#include <CGAL/partition_is_valid_2.h>
 #include <CGAL/property_map.h>
+
+#include <bimrock/geometry/geometry_error.hpp>
 
 namespace bimrock::cut {
 namespace {
@@ -20,19 +24,8 @@ using PartitionTraits = CGAL::Partition_traits_2<Kernel, PointMap>;
 std::vector<std::pair<std::size_t, std::size_t>> diagonals(std::vector<Point>& corners,
                                                            int max_optimal_vertices) {
   const std::size_t m = corners.size();
-  std::vector<std::size_t> index(m);
-  for (std::size_t k = 0; k < m; ++k)
-    index[k] = k;
-  const PartitionTraits traits(CGAL::make_property_map(corners));
-  std::vector<PartitionTraits::Polygon_2> pieces;
-  if (m <= static_cast<std::size_t>(max_optimal_vertices))
-    CGAL::optimal_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces),
-                                     traits);
-  else
-    CGAL::approx_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces), traits);
   std::vector<std::pair<std::size_t, std::size_t>> out;
-  for (const auto& piece : pieces) {
-    const std::vector<std::size_t> ring(piece.vertices_begin(), piece.vertices_end());
+  for (const std::vector<std::size_t>& ring : convex_pieces(corners, max_optimal_vertices)) {
     for (std::size_t k = 0; k < ring.size(); ++k) {
       const std::size_t u = ring[k];
       const std::size_t w = ring[(k + 1) % ring.size()];
@@ -46,6 +39,47 @@ std::vector<std::pair<std::size_t, std::size_t>> diagonals(std::vector<Point>& c
 }
 
 }  // namespace
+
+std::vector<std::vector<std::size_t>> convex_pieces(std::vector<Point>& corners,
+                                                    int max_optimal_vertices) {
+  const std::size_t m = corners.size();
+  std::vector<std::size_t> index(m);
+  for (std::size_t k = 0; k < m; ++k)
+    index[k] = k;
+  const PartitionTraits traits(CGAL::make_property_map(corners));
+  std::vector<PartitionTraits::Polygon_2> pieces;
+  const auto valid = [&] {
+    return CGAL::convex_partition_is_valid_2(index.begin(), index.end(), pieces.begin(),
+                                             pieces.end(), traits);
+  };
+  if (m <= static_cast<std::size_t>(max_optimal_vertices)) {
+    CGAL::optimal_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces),
+                                     traits);
+    // A guard around a bug of CGAL's optimal convex partition (5.5, open upstream): on some
+    // faces, e.g. one with three nearly collinear corners beside a notched hole, it returns a
+    // piece with reflex corners. CGAL checks its result only in debug builds (a postcondition,
+    // an exception there; nothing in release, where the second partition pass after the sliver
+    // merge may or may not mend it). Checked here in every build: a partition that is not
+    // convex is replaced by the approximation's, which holds.
+    if (!valid())
+      pieces.clear();
+  }
+  if (pieces.empty()) {
+    CGAL::approx_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces), traits);
+    if (!valid()) {
+      const Vec2 at = to_vec2(corners.front());
+      throw GeometryError("domain", "a face of the cut blocks near (" + std::to_string(at.x()) +
+                                        ", " + std::to_string(at.y()) +
+                                        ") could not be split into convex blocks; move a joint "
+                                        "or the outline there a little");
+    }
+  }
+  std::vector<std::vector<std::size_t>> out;
+  out.reserve(pieces.size());
+  for (const auto& piece : pieces)
+    out.emplace_back(piece.vertices_begin(), piece.vertices_end());
+  return out;
+}
 
 int number_regions(Arrangement& arr) {
   int region = 0;

@@ -13,6 +13,14 @@ namespace bimrock::cut {
 /// @return the number of regions
 int number_regions(Arrangement& arr);
 
+/// A convex partition of the simple counter-clockwise polygon `corners`: each piece as the
+/// indices of its corners, counter-clockwise. Optimal up to `max_optimal_vertices` corners (and
+/// wherever CGAL's optimal partition is a convex partition; else the approximation). Throws
+/// GeometryError (item "domain") if neither is. (`corners` is not changed: CGAL's property map
+/// of them wants a mutable vector.)
+std::vector<std::vector<std::size_t>> convex_pieces(std::vector<Point>& corners,
+                                                    int max_optimal_vertices);
+
 /// Splits every face inside the domain with a corner reflex by more than `tol` (the distance
 /// off the chord of its neighbouring corners; 0 splits every non-convex face); the pieces keep
 /// the face's label (and region). @return the number of faces split
