@@ -233,26 +233,48 @@ TEST(GmshLayeredGroundExample, SettlementMatchesOneDimensionalCompression) {
   std::filesystem::remove_all(out.parent_path());
 }
 
-// The plane failure example: a block on a joint dipping 35 degrees, c = 20 kPa, phi = 30 deg.
-// Limit equilibrium of the sliding block (the README's derivation) gives
-// F = (c L + W cos(35) tan(30)) / (W sin(35)); the bracket must hold it to its tolerance.
-TEST(PlaneFailureExample, FactorOfSafetyBracketsLimitEquilibrium) {
-  const fs::path out = run_example("plane_failure/case.yaml");
-  const nlohmann::json s = testing::read_json(out / "summary.json");
-  const double deg = M_PI / 180.0;
-  const double toe_x = 10.0 * std::cos(35 * deg), height = 10.0 * std::sin(35 * deg);
-  const double area = 0.5 * height * (toe_x - 4.0);  // the triangle (0, 0), (toe_x, h), (4, h)
-  const double w = 26e3 * area;
-  const double expected =
-      (20e3 * 10.0 + w * std::cos(35 * deg) * std::tan(30 * deg)) / (w * std::sin(35 * deg));
-  const nlohmann::json& f = s.at("factor_of_safety");
-  const double lower = f.at("lower").get<double>(), upper = f.at("upper").get<double>();
-  EXPECT_LE(lower, expected);
-  EXPECT_GE(upper, expected);
-  EXPECT_LE(upper - lower, 1.1e-3 * upper);
-  EXPECT_EQ(f.at("mechanism_blocks").at("moves"), nlohmann::json::array({1}));
-  EXPECT_TRUE(fs::exists(out / "fos_mechanism.png"));
-  EXPECT_TRUE(fs::exists(out / "fos_trials.svg"));
+// The slope stability example: plane failure with a tension crack, dry, with a water table that
+// puts 3 m of water in the crack and falls linearly along the bedding to the toe, and under a
+// seismic coefficient kh = 0.1 out of the slope. Hoek & Bray's limit equilibrium (Wyllie & Mah,
+// Rock Slope Engineering, 2004, eqs. 6.3-6.7; the README's table):
+// F = (c A + (W (cos(psi_p) - kh sin(psi_p)) - U - V sin(psi_p)) tan(phi))
+//     / (W (sin(psi_p) + kh cos(psi_p)) + V cos(psi_p)).
+double hoek_bray(double water_depth, double kh) {
+  const double deg = M_PI / 180.0, h = 20.0, z = 6.0, pp = 30 * deg, pf = 60 * deg;
+  const double w = 0.5 * 25e3 * h * h * ((1 - (z / h) * (z / h)) / std::tan(pp) - 1 / std::tan(pf));
+  const double a = (h - z) / std::sin(pp);
+  const double u = 0.5 * 9810.0 * water_depth * a, v = 0.5 * 9810.0 * water_depth * water_depth;
+  return (20e3 * a +
+          (w * (std::cos(pp) - kh * std::sin(pp)) - u - v * std::sin(pp)) * std::tan(35 * deg)) /
+         (w * (std::sin(pp) + kh * std::cos(pp)) + v * std::cos(pp));
+}
+
+TEST(SlopeStabilityExample, FactorsOfSafetyBracketHoekAndBray) {
+  const struct {
+    const char* file;
+    double expected;
+  } cases[] = {{"dry.yaml", hoek_bray(0.0, 0.0)},
+               {"water.yaml", hoek_bray(3.0, 0.0)},
+               {"seismic.yaml", hoek_bray(0.0, 0.1)}};
+  for (const auto& c : cases) {
+    const fs::path out = run_example(std::string("slope_stability/") + c.file);
+    const nlohmann::json s = testing::read_json(out / "summary.json");
+    const nlohmann::json& f = s.at("factor_of_safety");
+    const double lower = f.at("lower").get<double>(), upper = f.at("upper").get<double>();
+    // The bracket holds F to its tolerance, 1e-4, and to the 4 decimals of the vertices.
+    EXPECT_LE(lower, c.expected * (1 + 1e-5)) << c.file;
+    EXPECT_GE(upper, c.expected * (1 - 1e-5)) << c.file;
+    EXPECT_LE(upper - lower, 1.1e-4 * upper) << c.file;
+    // The sliding block is the mechanism's fastest (fos_mechanism.csv: its speed is 1; the
+    // blocks around it move only elastically, a few percent of it).
+    const std::string csv = testing::read_text(out / "fos_mechanism.csv");
+    const std::size_t row = csv.find("\n0,");
+    ASSERT_NE(row, std::string::npos) << csv;
+    const std::string line = csv.substr(row + 1, csv.find('\n', row + 1) - row - 1);
+    EXPECT_TRUE(line.ends_with(",1,moves")) << line;
+    EXPECT_TRUE(fs::exists(out / "fos_mechanism.png"));
+    EXPECT_TRUE(fs::exists(out / "fos_trials.svg"));
+  }
 }
 
 }  // namespace

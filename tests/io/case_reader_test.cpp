@@ -157,6 +157,53 @@ TEST(CaseReader, ASeismicLoadAddsItsCoefficientsToTheBodyForce) {
   EXPECT_EQ(f.item, "loads.seismic.kh");
 }
 
+TEST(CaseReader, ReadsWaterWithItsSurfaceAndPressureLines) {
+  const Case c = read_case_string(
+      kMinimal +
+          "loads:\n  water:\n    surface: [[0, 2], [5, 3]]\n    unit_weight: 1.0e4\n"
+          "    lines:\n      - {from: [0, 0], to: [1, 0], pressure: [100, 0]}\n",
+      "case.yaml");
+  const WaterSpec& w = c.spec.loads.water.value();
+  ASSERT_EQ(w.surface.size(), 2u);
+  EXPECT_EQ(w.surface[1], Vec2(5, 3));
+  EXPECT_DOUBLE_EQ(w.unit_weight, 1e4);
+  ASSERT_EQ(w.lines.size(), 1u);
+  EXPECT_DOUBLE_EQ(w.lines[0].pressure_from, 100.0);
+  EXPECT_DOUBLE_EQ(w.lines[0].pressure_to, 0.0);
+  EXPECT_EQ(w.lines[0].source.item, "loads.water.lines[0]");
+  EXPECT_DOUBLE_EQ(
+      read_case_string(kMinimal + "loads: {water: {surface: [[0, 1], [1, 1]]}}\n", "case.yaml")
+          .spec.loads.water->unit_weight,
+      9810.0);
+}
+
+TEST(CaseReaderErrors, BadWaterIsRejectedByItem) {
+  const struct {
+    std::string water;
+    std::string item;
+    std::string message;
+  } cases[] = {
+      {"{surface: [[0, 1], [0, 2]]}", "loads.water.surface[1]", "the surface's x must increase"},
+      {"{surface: [[0, 1]]}", "loads.water.surface", "needs at least two points"},
+      {"{unit_weight: 9810}", "loads.water", "give a phreatic surface, pressure lines or both"},
+      {"{surface: [[0, 1], [1, 1]], unit_weight: 0}", "loads.water.unit_weight", "positive"},
+      {"{lines: [{from: [0, 0], to: [1, 0], pressure: [-1, 0]}]}",
+       "loads.water.lines[0].pressure[0]", "must not be negative"},
+      {"{lines: [{from: [0, 0], to: [1, 0], pressure: [1]}]}", "loads.water.lines[0].pressure",
+       "must be [p_from, p_to]"},
+      {"{lines: [{from: [0, 0], to: [0, 0], pressure: [1, 1]}]}", "loads.water.lines[0].to",
+       "must differ"},
+      {"{lines: [{from: [0, 0], to: [1, 0], pressure: [1, 1], depth: 2}]}",
+       "loads.water.lines[0].depth", ""},
+  };
+  for (const auto& w : cases) {
+    const Failure f = error_of(kMinimal + "loads:\n  water: " + w.water + "\n");
+    EXPECT_EQ(f.line, 9) << w.water;
+    EXPECT_EQ(f.item, w.item) << w.water << ": " << f.message;
+    EXPECT_NE(f.message.find(w.message), std::string::npos) << f.message;
+  }
+}
+
 TEST(CaseReaderErrors, PlasticAnalysisOptionsOutOfRangeAreRejected) {
   const Failure wide = error_of(kMinimal + "analysis: {bracket_tolerance: 0.6}\n");
   EXPECT_EQ(wide.item, "analysis.bracket_tolerance");

@@ -37,7 +37,10 @@ void run_mesh(const std::string& case_file, const std::filesystem::path& out, bo
   // No picture of more blocks than a run draws (a grey blur, slow to draw): ParaView then.
   const bool picture = model.n_blocks() <= kMaxPictureBlocks;
   if (picture) {
-    write_block_picture(model, {model.title.empty() ? "blocks" : model.title, {}, 0.05, {}, 1400},
+    const std::vector<Vec2>& water =
+        model.stages.empty() ? model.loads.water_surface : model.stages.back().loads.water_surface;
+    write_block_picture(model,
+                        {model.title.empty() ? "blocks" : model.title, {}, 0.05, {}, 1400, water},
                         folder.path() / "blocks");
   }
 

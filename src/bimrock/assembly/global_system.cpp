@@ -136,6 +136,18 @@ Eigen::VectorXd assemble_loads(const Model& model, const Loads& loads) {
                                     traction;
     }
   }
+  // Water pushes into each wet face: traction -p n, p linear along the piece (2-point Gauss is
+  // exact for it times the linear Q).
+  for (const PressureFace& w : loads.water) {
+    const double length = w.segment.length();
+    for (const IntegrationPoint& ip : integration_points(w.segment, Integration::gauss)) {
+      const double s = (ip.point - w.segment.a).norm() / length;
+      const double pressure = w.pressure_a + s * (w.pressure_b - w.pressure_a);
+      p.segment<6>(6 * w.block) -= (t * ip.weight * pressure) *
+                                   block_Q(model.blocks[w.block].centroid, ip.point).transpose() *
+                                   w.outward_normal;
+    }
+  }
   return p;
 }
 

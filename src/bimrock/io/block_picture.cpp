@@ -9,6 +9,7 @@
 #include <cairo.h>
 
 #include <bimrock/assembly/kinematics.hpp>
+#include <bimrock/model/water_pressure.hpp>
 
 namespace bimrock {
 namespace {
@@ -50,6 +51,34 @@ void polygon_path(cairo_t* cr, const Frame& f, const Model& m, int block, const 
       cairo_line_to(cr, f.x(p.x()), f.y(p.y()));
   }
   cairo_close_path(cr);
+}
+
+/// The phreatic surface, dashed blue, across the drawing's width, its height kept within a
+/// diagonal of the drawing (cairo's coordinates are bounded).
+void draw_water_surface(cairo_t* cr, const std::vector<Vec2>& surface, const Frame& f) {
+  if (surface.empty())
+    return;
+  std::vector<double> xs = {f.box.lo.x()};
+  for (const Vec2& p : surface) {
+    if (p.x() > f.box.lo.x() && p.x() < f.box.hi.x())
+      xs.push_back(p.x());
+  }
+  xs.push_back(f.box.hi.x());
+  const double reach = f.box.diagonal();
+  cairo_set_source_rgb(cr, 0.1, 0.45, 0.85);
+  cairo_set_line_width(cr, 1.5);
+  const double dash[] = {6.0, 3.0};
+  cairo_set_dash(cr, dash, 2, 0.0);
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    const double y =
+        std::clamp(phreatic_height(surface, xs[k]), f.box.lo.y() - reach, f.box.hi.y() + reach);
+    if (k == 0)
+      cairo_move_to(cr, f.x(xs[k]), f.y(y));
+    else
+      cairo_line_to(cr, f.x(xs[k]), f.y(y));
+  }
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0.0);
 }
 
 void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, double width) {
@@ -114,6 +143,7 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
     cairo_line_to(cr, f.x(b.x()), f.y(b.y()));
     cairo_stroke(cr);
   }
+  draw_water_surface(cr, pic.water_surface, f);
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_font_size(cr, 14);

@@ -24,6 +24,8 @@ struct BlockPicture {
   /// Per interface (empty: joints drawn thin, continuum interfaces not drawn).
   std::vector<InterfaceMark> marks;
   int width_px = 1000;
+  /// The phreatic surface to draw (empty: none), across the picture.
+  std::vector<Vec2> water_surface;
 };
 
 /// The length of a picture's scale bar for a drawing `width` wide [m]: the largest 1, 2 or 5

@@ -1,5 +1,5 @@
-/// @file How a case is held and loaded: supports, loads (gravity, point loads, tractions) and
-/// the load stages, each under load or displacement control.
+/// @file How a case is held and loaded: supports, loads (gravity, point loads, tractions, water)
+/// and the load stages, each under load or displacement control.
 #include <bimrock/io/case_sections.hpp>
 
 #include <cmath>
@@ -39,6 +39,56 @@ TractionSpec read_traction(const Value& v) {
   return t;
 }
 
+/// from, to [m]; pressure: [p_from, p_to] [Pa], compression positive.
+PressureLineSpec read_pressure_line(const Value& v) {
+  const Map m = open(v, "loads.water.lines[]");
+  PressureLineSpec l;
+  l.from = location(m.at("from"));
+  l.to = location(m.at("to"));
+  if (l.from == l.to)
+    m.at("to").fail("must differ from 'from'");
+  const std::vector<Value> p = m.at("pressure").list();
+  if (p.size() != 2)
+    m.at("pressure").fail("must be [p_from, p_to], two pressures in Pa");
+  const auto pressure = [](const Value& x) {
+    const double value = bounded(x, kMaxForce, "Pa", kLarger);
+    if (value < 0.0)
+      x.fail("must not be negative (suction is not modelled)");
+    return value;
+  };
+  l.pressure_from = pressure(p[0]);
+  l.pressure_to = pressure(p[1]);
+  l.source = v.ref();
+  return l;
+}
+
+/// surface: [[x, y], ...] with x increasing [m]; unit_weight [N/m^3]; lines: pressure lines.
+WaterSpec read_water(const Value& v) {
+  const Map m = open(v, "loads.water");
+  WaterSpec w;
+  w.source = v.ref();
+  if (const auto surface = m.find("surface")) {
+    for (const Value& point : surface->list()) {
+      const Vec2 p = location(point);
+      if (!w.surface.empty() && p.x() <= w.surface.back().x())
+        point.fail("the surface's x must increase from point to point");
+      w.surface.push_back(p);
+    }
+    if (w.surface.size() < 2)
+      surface->fail("needs at least two points");
+  }
+  if (const auto gamma = m.find("unit_weight")) {
+    w.unit_weight = bounded(*gamma, 1e6, "N/m^3", "no fluid is that heavy");
+    if (w.unit_weight <= 0.0)
+      gamma->fail("must be positive");
+  }
+  if (const auto lines = m.find("lines"))
+    w.lines = read_list(*lines, read_pressure_line);
+  if (w.surface.empty() && w.lines.empty())
+    v.fail("give a phreatic surface, pressure lines or both");
+  return w;
+}
+
 }  // namespace
 
 LoadsSpec read_loads(const Value& v) {
@@ -60,6 +110,8 @@ LoadsSpec read_loads(const Value& v) {
     };
     loads.gravity += Vec2(coefficient("kh"), -coefficient("kv"));
   }
+  if (const auto w = m.find("water"))
+    loads.water = read_water(*w);
   return loads;
 }
 

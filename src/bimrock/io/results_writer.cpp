@@ -18,6 +18,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The phreatic surface in force during stage `stage` (-1: the elastic analysis's loads).
+std::vector<Vec2> water_surface(const Model& model, int stage) {
+  return stage < 0 ? model.loads.water_surface
+                   : model.stages[static_cast<std::size_t>(stage)].loads.water_surface;
+}
+
 std::string step_file(std::size_t step) {
   return fmt::format("vtk/step_{:04d}.vtu", step);
 }
@@ -89,9 +95,15 @@ void write_factor_of_safety(const Model& model, const PlasticResult& result, con
         model,
         {fmt::format("mechanism at F = {:.4g} (red: slipping joints, blue: opening)",
                      f.collapse->failed),
-         f.collapse->direction, 0.08, mechanism_marks(model, result.points, *f.collapse), 1000},
+         f.collapse->direction, 0.08, mechanism_marks(model, result.points, *f.collapse), 1000,
+         water_surface(model, static_cast<int>(model.stages.size()) - 1)},
         dir / "fos_mechanism");
     files.insert(files.end(), {"fos_mechanism.png", "fos_mechanism.svg"});
+  }
+  if (f.collapse && f.collapse->direction.size() == model.n_dofs()) {
+    write_mechanism_csv(model, mechanism_blocks(model, f.collapse->direction),
+                        dir / "fos_mechanism.csv");
+    files.push_back("fos_mechanism.csv");
   }
 }
 
@@ -160,8 +172,9 @@ void write_elastic_results(const Model& model, const ElasticSolution& solution,
     files.insert(files.end(), {step_file(1), "results.pvd"});
   }
   if (model.n_blocks() <= kMaxPictureBlocks) {
-    write_block_picture(model, {"displaced (magnified)", solution.u, 0.05, {}, 1000},
-                        folder.path() / "displaced");
+    write_block_picture(
+        model, {"displaced (magnified)", solution.u, 0.05, {}, 1000, water_surface(model, -1)},
+        folder.path() / "displaced");
     files.insert(files.end(), {"displaced.png", "displaced.svg"});
   }
   write_json(run_summary(model, solution, nullptr, files), folder.path() / "summary.json");
@@ -241,14 +254,23 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
     files.push_back("results.pvd");
   }
   if (model_.n_blocks() <= kMaxPictureBlocks) {
-    write_block_picture(model_, {"final state (displacements magnified)", fields.u, 0.05, {}, 1000},
+    const int stage =
+        result.collapse ? result.collapse->stage : static_cast<int>(model_.stages.size()) - 1;
+    write_block_picture(model_,
+                        {"final state (displacements magnified)",
+                         fields.u,
+                         0.05,
+                         {},
+                         1000,
+                         water_surface(model_, stage)},
                         dir / "final");
     files.insert(files.end(), {"final.png", "final.svg"});
     if (result.collapse && result.collapse->direction.size() == model_.n_dofs()) {
       write_block_picture(
           model_,
           {"collapse mechanism (red: slipping joints, blue: opening)", result.collapse->direction,
-           0.08, mechanism_marks(model_, result.points, *result.collapse), 1000},
+           0.08, mechanism_marks(model_, result.points, *result.collapse), 1000,
+           water_surface(model_, stage)},
           dir / "collapse");
       files.insert(files.end(), {"collapse.png", "collapse.svg"});
     }

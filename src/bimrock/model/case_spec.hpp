@@ -65,11 +65,33 @@ struct TractionSpec {
   SourceRef source;
 };
 
+/// A prescribed water pressure along a straight line (a tension crack, an uplift distribution):
+/// linear from `pressure_from` at `from` to `pressure_to` at `to`, on every wet block face that
+/// lies on the segment.
+struct PressureLineSpec {
+  Vec2 from = Vec2::Zero();
+  Vec2 to = Vec2::Zero();
+  double pressure_from = 0.0;  ///< [Pa], compression positive
+  double pressure_to = 0.0;    ///< [Pa]
+  SourceRef source;
+};
+
+/// Water in the joints (docs/formulation.md, "Water"): hydrostatic below a phreatic surface,
+/// and prescribed pressure lines, which replace it where they lie.
+struct WaterSpec {
+  std::vector<Vec2> surface;    ///< the phreatic surface [m], x increasing; empty: none
+  double unit_weight = 9810.0;  ///< [N/m^3]
+  std::vector<PressureLineSpec> lines;
+  SourceRef source;
+};
+
 struct LoadsSpec {
   /// Body force per unit volume = unit_weight * gravity (gravity is dimensionless, e.g. (0, -1)).
   Vec2 gravity = Vec2::Zero();
   std::vector<PointLoadSpec> points;
   std::vector<TractionSpec> tractions;
+  /// The water at the end of the stage; it replaces the earlier stages' water, not adds to it.
+  std::optional<WaterSpec> water;
 };
 
 struct MonitorSpec {

@@ -51,10 +51,23 @@ struct Traction {
   double shear = 0.0;   ///< [Pa], along (-n_y, n_x)
 };
 
+/// Water pressure on a piece of a block's face, linear from `pressure_a` at segment.a to
+/// `pressure_b` at segment.b, pushing into the block (compression positive; a stage that lowers
+/// the water holds negative pressures: the change).
+struct PressureFace {
+  int block = 0;
+  Segment segment;
+  Vec2 outward_normal;
+  double pressure_a = 0.0;  ///< [Pa]
+  double pressure_b = 0.0;  ///< [Pa]
+};
+
 struct Loads {
   Vec2 gravity = Vec2::Zero();  ///< body force per volume = unit_weight * gravity
   std::vector<PointLoad> points;
   std::vector<Traction> tractions;
+  std::vector<PressureFace> water;  ///< model/water_pressure.hpp
+  std::vector<Vec2> water_surface;  ///< the phreatic surface in force after these loads, to draw
 };
 
 struct DisplacementControl {

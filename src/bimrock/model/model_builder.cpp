@@ -5,6 +5,7 @@
 #include <bimrock/model/block_generation.hpp>
 #include <bimrock/model/limits.hpp>
 #include <bimrock/model/model.hpp>
+#include <bimrock/model/water_pressure.hpp>
 
 namespace bimrock {
 namespace {
@@ -384,10 +385,36 @@ class Builder {
     return loads;
   }
 
-  void add_loads() { model_.loads = resolve_loads(spec_.loads, "loads"); }
+  void add_loads() {
+    model_.loads = resolve_loads(spec_.loads, "loads");
+    if (spec_.loads.water) {
+      model_.loads.water = water_faces(model_, *spec_.loads.water);
+      model_.loads.water_surface = spec_.loads.water->surface;
+    }
+  }
+
+  /// A stage's water replaces the water in force: its loads hold the change.
+  void add_stage_water(const StageSpec& st, Stage& stage,
+                       std::vector<PressureFace>& in_force) const {
+    if (!st.loads.water) {
+      stage.loads.water_surface =
+          model_.stages.empty() ? std::vector<Vec2>{} : model_.stages.back().loads.water_surface;
+      return;
+    }
+    std::vector<PressureFace> faces = water_faces(model_, *st.loads.water);
+    stage.loads.water = faces;
+    for (PressureFace f : in_force) {
+      f.pressure_a = -f.pressure_a;
+      f.pressure_b = -f.pressure_b;
+      stage.loads.water.push_back(f);
+    }
+    stage.loads.water_surface = st.loads.water->surface;
+    in_force = std::move(faces);
+  }
 
   void add_stages() {
     double increments = 0.0;
+    std::vector<PressureFace> water_in_force;
     for (const StageSpec& st : spec_.stages) {
       increments += st.increments;
       if (increments > spec_.limits.increments) {
@@ -411,6 +438,7 @@ class Builder {
           fail(c.source, "the direction must be a non-zero vector");
         stage.control = DisplacementControl{monitor, c.direction.normalized(), c.displacement};
       }
+      add_stage_water(st, stage, water_in_force);
       model_.stages.push_back(std::move(stage));
     }
   }
