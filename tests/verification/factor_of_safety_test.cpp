@@ -89,5 +89,42 @@ TEST(FactorOfSafety, SeismicLoadOnALevelBlockFollowsLimitEquilibrium) {
   expect_bracket(with_factor_of_safety(c), (1.0 + kv) * std::tan(30.0 * kDeg) / kh);
 }
 
+// A block on an incline steeper than its friction angle slides under its own weight: F < 1.
+// Each trial runs the gravity stage again with the strengths raised (divided by F < 1); the
+// same limit equilibrium gives F = tan(phi) / tan(alpha) = tan(30) / tan(35) = 0.8245, and with
+// cohesion F = (c L + W cos(alpha) tan(phi)) / (W sin(alpha)).
+TEST(FactorOfSafety, ABlockThatSlidesUnderItsStagesHasAFactorBelowOne) {
+  Incline in;
+  in.slope_deg = 35.0;
+  in.friction_deg = 30.0;
+  CaseSpec c = testing::incline_case(in);
+  PlasticOptions options;
+  options.factor_of_safety = FactorOfSafetyOptions{};
+  const PlasticResult r = run_plastic_analysis(build_model(c), options);
+  ASSERT_TRUE(r.collapse.has_value());  // the stages collapse, as F < 1 says
+  ASSERT_TRUE(r.factor_of_safety.has_value());
+  const FactorOfSafety& f = *r.factor_of_safety;
+  ASSERT_TRUE(f.collapse.has_value());
+  const double expected = std::tan(30.0 * kDeg) / std::tan(35.0 * kDeg);
+  EXPECT_LE(f.lower, expected * (1.0 + 1e-6));
+  EXPECT_GE(f.collapse->failed, expected * (1.0 - 1e-6));
+  EXPECT_LE(f.collapse->failed - f.lower, 1.1e-3 * f.collapse->failed);
+  EXPECT_FALSE(f.collapse->mechanism.empty());
+  ASSERT_FALSE(f.trials.empty());
+  EXPECT_DOUBLE_EQ(f.trials.back().factor, f.lower);
+
+  const double cohesion = 1e3;  // [Pa]
+  c.joint_materials[0].strength->cohesion = Softening::constant(cohesion);
+  const double w = in.weight(), a = in.slope_deg * kDeg;
+  const double with_cohesion =
+      (cohesion * in.width + w * std::cos(a) * std::tan(in.friction_deg * kDeg)) /
+      (w * std::sin(a));
+  ASSERT_LT(with_cohesion, 1.0);
+  const PlasticResult rc = run_plastic_analysis(build_model(c), options);
+  ASSERT_TRUE(rc.factor_of_safety && rc.factor_of_safety->collapse);
+  EXPECT_LE(rc.factor_of_safety->lower, with_cohesion * (1.0 + 1e-6));
+  EXPECT_GE(rc.factor_of_safety->collapse->failed, with_cohesion * (1.0 - 1e-6));
+}
+
 }  // namespace
 }  // namespace bimrock

@@ -8,16 +8,19 @@
 
 namespace bimrock {
 
+StrengthSelection selected_strengths(const Model& model, const FactorOfSafetyOptions& fos) {
+  return fos.selection.joint_materials.empty() && fos.selection.block_materials.empty()
+             ? all_strengths(model)
+             : fos.selection;
+}
+
 FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<YieldPoint>& points,
                                      const SparseCholesky& k, const AnalysisState& start,
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
                                      Timings& timings) {
-  const StrengthSelection selection =
-      fos.selection.joint_materials.empty() && fos.selection.block_materials.empty()
-          ? all_strengths(model)
-          : fos.selection;
+  const StrengthSelection selection = selected_strengths(model, fos);
   // The strength reduction is a stage of no load whose factor is F itself: the yield functions
   // of the reduced strengths are violated at the state carried, and each step's LCP finds the
   // plastic flow that restores them (eqs. 24-28 with dU_load = 0).
@@ -66,6 +69,54 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
       break;
     }
   }
+  return out;
+}
+
+FactorOfSafety find_factor_below_one(const Model& model, const FactorOfSafetyOptions& fos,
+                                     const Collapse& at_one, const RunStages& run) {
+  FactorOfSafety out;
+  out.largest = fos.largest;
+  out.lower = 0.0;
+  double upper = 1.0;
+  Collapse failed = at_one;
+  const double smallest = 1.0 / fos.largest;
+  // One trial: true when the stages carry F (a trial kept, `lower` raised), false when they
+  // collapse (`upper` lowered) or are undecided (the search ends).
+  const auto carries = [&](double factor) {
+    const StagesOutcome o = run(factor);
+    if (o.undecided) {
+      out.undecided = true;
+      return false;
+    }
+    if (o.collapse) {
+      upper = factor;
+      failed = *o.collapse;
+      return false;
+    }
+    out.lower = factor;
+    std::vector<Vec2> monitors;
+    for (const Monitor& m : model.monitors)
+      monitors.push_back(displacement_at(model, m.block, m.point, o.state.u));
+    out.trials.push_back({factor, o.largest_flow, monitors});
+    return true;
+  };
+  // Down in steps until a trial carries, then bisection of [lower, upper].
+  bool bracketed = false;
+  for (double f = 1.0 - fos.step; !out.undecided; f -= fos.step) {
+    if (carries(std::max(f, smallest))) {
+      bracketed = true;
+      break;
+    }
+    if (f <= smallest)
+      break;
+  }
+  while (bracketed && !out.undecided && upper - out.lower > fos.tolerance * upper)
+    carries(0.5 * (out.lower + upper));
+  std::sort(out.trials.begin(), out.trials.end(),
+            [](const FactorTrial& a, const FactorTrial& b) { return a.factor < b.factor; });
+  failed.carried = out.lower;
+  failed.failed = upper;
+  out.collapse = failed;
   return out;
 }
 

@@ -1,5 +1,6 @@
 #include <bimrock/analysis/plastic_analysis.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -101,6 +102,60 @@ PlasticResult with_statistics(PlasticResult result, const SparseCholesky& k,
   return result;
 }
 
+// The stages of the model from the unloaded state, into `result` (its points given): every
+// increment carried is recorded; the first collapse or undecided step ends them.
+void run_stages(const Model& model, const SparseCholesky& k, const PlasticOptions& options,
+                const CandidateTuning& tuning, IncrementSolver& solver, IncrementMemory& memory,
+                const IncrementCallback& on_increment, PlasticResult& result) {
+  result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
+  result.state.points.assign(result.points.size(), PlasticState{});
+  const YieldEvaluator yield(model, result.points);
+  for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
+    const Stage& stage = model.stages[st];
+    const StageContext ctx = stage_context(model, result.points, k, yield, stage, result.timings);
+    const double step = (stage.control ? stage.control->displacement : 1.0) / stage.increments;
+    result.state.stage_factor = 0.0;
+    std::optional<Trial> last;  // the last carried trial of the stage
+    int increment = 0;
+    auto part_start = std::chrono::steady_clock::now();
+    // Records a carried trial (a whole increment or a part of it) with the time since the last
+    // part: the parts' times add up, none counts another's (nor the callback's).
+    const CarryStep carry = [&](const Trial& carried) {
+      const double secs =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - part_start).count();
+      result.state = carried.next;
+      result.history.push_back(record(model, carried, st, ++increment, secs));
+      if (on_increment)
+        on_increment(result.history.back(), result.state);
+      last = carried;
+      part_start = std::chrono::steady_clock::now();
+    };
+    const TryStep try_step = [&](double s) {
+      return solve_increment(ctx, result.state, s, options, tuning, solver, memory);
+    };
+    const SteppingOptions stepping{options.bracket_tolerance, options.max_bisections,
+                                   stage.control.has_value(), false};
+    for (int n = 0; n < stage.increments; ++n) {
+      SteppingOptions these = stepping;
+      these.first_load = st == 0 && result.history.empty();
+      part_start = std::chrono::steady_clock::now();
+      const SteppedIncrement done =
+          step_increment(step, result.state.stage_factor, try_step, carry, these);
+      if (done.outcome == SteppedIncrement::Outcome::undecided) {
+        result.stopped = undecided_stop(st, stage, done.carried);
+        return;
+      }
+      if (done.outcome == SteppedIncrement::Outcome::collapse) {
+        result.collapse =
+            describe_collapse(st, done.carried, done.failed,
+                              done.failure ? &*done.failure : nullptr, last ? &*last : nullptr);
+        result.collapse->unstable_at_first_load = done.unstable_at_first_load;
+        return;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& options,
@@ -127,59 +182,33 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
       report_singular_stiffness(model, k.failed_column());
   }
   result.points = make_yield_points(model);
-  result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
-  result.state.points.assign(result.points.size(), PlasticState{});
   IncrementSolver solver(model, k, lower, tuning.solver);
   IncrementMemory memory;
-  const YieldEvaluator yield(model, result.points);
-  for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
-    const Stage& stage = model.stages[st];
-    const StageContext ctx = stage_context(model, result.points, k, yield, stage, result.timings);
-    const double step = (stage.control ? stage.control->displacement : 1.0) / stage.increments;
-    result.state.stage_factor = 0.0;
-    std::optional<Trial> last;  // the last carried trial of the stage
-    int increment = 0;
-    auto part_start = std::chrono::steady_clock::now();
-    // Records a carried trial (a whole increment or a part of it) with the time since the last
-    // part: the parts' times add up, none counts another's (nor the callback's).
-    const CarryStep carry = [&](const Trial& carried) {
-      const double secs =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - part_start).count();
-      result.state = carried.next;
-      result.history.push_back(record(model, carried, st, ++increment, secs));
-      if (on_increment)
-        on_increment(result.history.back(), result.state);
-      last = carried;
-      part_start = std::chrono::steady_clock::now();
-    };
-    const TryStep try_step = [&](double s) {
-      return solve_increment(ctx, result.state, s, options, tuning.candidates, solver, memory);
-    };
-    const SteppingOptions stepping{options.bracket_tolerance, options.max_bisections,
-                                   stage.control.has_value(), false};
-    for (int n = 0; n < stage.increments; ++n) {
-      SteppingOptions these = stepping;
-      these.first_load = st == 0 && result.history.empty();
-      part_start = std::chrono::steady_clock::now();
-      const SteppedIncrement done =
-          step_increment(step, result.state.stage_factor, try_step, carry, these);
-      if (done.outcome == SteppedIncrement::Outcome::undecided) {
-        result.stopped = undecided_stop(st, stage, done.carried);
-        return with_statistics(std::move(result), k, solver, memory);
-      }
-      if (done.outcome == SteppedIncrement::Outcome::collapse) {
-        result.collapse =
-            describe_collapse(st, done.carried, done.failed,
-                              done.failure ? &*done.failure : nullptr, last ? &*last : nullptr);
-        result.collapse->unstable_at_first_load = done.unstable_at_first_load;
-        return with_statistics(std::move(result), k, solver, memory);
-      }
+  run_stages(model, k, options, tuning.candidates, solver, memory, on_increment, result);
+  if (options.factor_of_safety && !result.stopped) {
+    const FactorOfSafetyOptions& fos = *options.factor_of_safety;
+    if (!result.collapse) {
+      result.factor_of_safety =
+          find_factor_of_safety(model, result.points, k, result.state, fos, options,
+                                tuning.candidates, solver, memory, result.timings);
+    } else {
+      // The stages collapse: F < 1. Each trial runs them again, strengths raised, on this K.
+      const StrengthSelection selection = selected_strengths(model, fos);
+      const RunStages run = [&](double factor) {
+        const Model stronger = reduce_strength(model, selection, factor);
+        PlasticResult trial;
+        trial.points = result.points;
+        run_stages(stronger, k, options, tuning.candidates, solver, memory, {}, trial);
+        for (const auto& [phase, seconds] : trial.timings.phases)
+          result.timings.add(phase, seconds);
+        StagesOutcome o{trial.state, 0.0, trial.collapse, trial.stopped.has_value()};
+        for (const PlasticState& p : trial.state.points)
+          o.largest_flow = std::max(o.largest_flow, p.slip);
+        return o;
+      };
+      result.factor_of_safety = find_factor_below_one(model, fos, *result.collapse, run);
     }
   }
-  if (options.factor_of_safety)
-    result.factor_of_safety =
-        find_factor_of_safety(model, result.points, k, result.state, *options.factor_of_safety,
-                              options, tuning.candidates, solver, memory, result.timings);
   return with_statistics(std::move(result), k, solver, memory);
 }
 

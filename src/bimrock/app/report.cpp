@@ -114,7 +114,12 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
   }
   if (result.factor_of_safety) {
     const FactorOfSafety& f = *result.factor_of_safety;
-    if (f.collapse)
+    if (f.collapse && f.lower == 0.0)
+      fmt::print(
+          "FACTOR OF SAFETY (strength reduction): F < {:.4f}: the stages fail even with the "
+          "strengths multiplied by factor_of_safety.largest\n",
+          f.collapse->failed);
+    else if (f.collapse)
       fmt::print(
           "FACTOR OF SAFETY (strength reduction): F between {:.4f} (carried) and {:.4f} (fails); "
           "{} yield modes in its mechanism (summary.json, fos_mechanism.png)\n",
