@@ -89,6 +89,26 @@ TEST(FactorOfSafety, SeismicLoadOnALevelBlockFollowsLimitEquilibrium) {
   expect_bracket(with_factor_of_safety(c), (1.0 + kv) * std::tan(30.0 * kDeg) / kh);
 }
 
+// F after a stage that is not the last: the block's F under gravity alone, tan(phi) /
+// tan(alpha), although a later stage pushes it downslope; the later stage still runs.
+TEST(FactorOfSafety, AfterAGivenStageTheLaterStagesStillRun) {
+  Incline in;
+  in.slope_deg = 20.0;
+  in.friction_deg = 35.0;
+  const double push = 0.2 * in.weight();  // downslope, well below what it takes to slide
+  PlasticOptions options;
+  options.factor_of_safety = FactorOfSafetyOptions{};
+  options.factor_of_safety->after_stage = 0;
+  const PlasticResult r =
+      run_plastic_analysis(build_model(testing::incline_case(in, Vec2(push, 0.0), 2)), options);
+  EXPECT_FALSE(r.collapse.has_value());
+  ASSERT_FALSE(r.history.empty());
+  EXPECT_EQ(r.history.back().stage, 1);
+  EXPECT_DOUBLE_EQ(r.history.back().stage_factor, 1.0);
+  expect_bracket(r, std::tan(35.0 * kDeg) / std::tan(20.0 * kDeg));
+  EXPECT_EQ(r.factor_of_safety->stage, 0);
+}
+
 // A block on an incline steeper than its friction angle slides under its own weight: F < 1.
 // Each trial runs the gravity stage again with the strengths raised (divided by F < 1); the
 // same limit equilibrium gives F = tan(phi) / tan(alpha) = tan(30) / tan(35) = 0.8245, and with

@@ -18,6 +18,9 @@ struct FactorOfSafetyOptions {
   double tolerance = 1e-3;      ///< relative width of the bracket [lower, upper]
   double step = 0.05;           ///< the increment of F between trials
   double largest = 10.0;        ///< F is not raised beyond this
+  /// The stage after which F is found (its index; none: the last); later stages then go on
+  /// from the state at F = 1.
+  std::optional<int> after_stage;
 };
 
 /// One trial of F that carried: F, the largest plastic multiplier of its step (a slip or an
@@ -29,6 +32,7 @@ struct FactorTrial {
 };
 
 struct FactorOfSafety {
+  int stage = 0;         ///< the stage after which F was found
   double lower = 1.0;    ///< the largest F shown stable (carried)
   double largest = 1.0;  ///< the largest F the search would try (FactorOfSafetyOptions)
   /// The smallest F proven to fail (collapse->failed; collapse->carried is `lower`) and its

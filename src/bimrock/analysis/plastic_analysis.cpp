@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -97,16 +98,19 @@ PlasticResult with_statistics(PlasticResult result, const SparseCholesky& k,
   result.reserve_switches = zones.reserve_switches;
   result.regions = zones.regions;
   result.zone_blocks = zones.zone_blocks;
+  result.tangent_factorizations = zones.tangent.factorizations;
   result.interrupted_rounds = memory.interrupted_rounds;
   result.rounds_without_around = memory.rounds_without_around;
   return result;
 }
 
 // The stages of the model from the unloaded state, into `result` (its points given): every
-// increment carried is recorded; the first collapse or undecided step ends them.
+// increment carried is recorded; the first collapse or undecided step ends them. `at_stage_end`
+// (if any) is called with each stage carried.
 void run_stages(const Model& model, const SparseCholesky& k, const PlasticOptions& options,
                 const CandidateTuning& tuning, IncrementSolver& solver, IncrementMemory& memory,
-                const IncrementCallback& on_increment, PlasticResult& result) {
+                const IncrementCallback& on_increment, PlasticResult& result,
+                const std::function<void(int)>& at_stage_end = {}) {
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
   const YieldEvaluator yield(model, result.points);
@@ -153,7 +157,35 @@ void run_stages(const Model& model, const SparseCholesky& k, const PlasticOption
         return;
       }
     }
+    if (at_stage_end)
+      at_stage_end(st);
   }
+}
+
+// F < 1, for stages that collapse up to `fos_stage` (result.collapse): each trial runs them
+// again from the start with the strengths raised, on the analysis' K.
+FactorOfSafety factor_below_one(const Model& model, int fos_stage, const SparseCholesky& k,
+                                const PlasticOptions& options, const CandidateTuning& tuning,
+                                IncrementSolver& solver, IncrementMemory& memory,
+                                PlasticResult& result) {
+  Model until = model;
+  until.stages.resize(static_cast<std::size_t>(fos_stage) + 1);
+  const StrengthSelection selection = selected_strengths(model, *options.factor_of_safety);
+  const RunStages run = [&](double factor) {
+    const Model stronger = reduce_strength(until, selection, factor);
+    PlasticResult trial;
+    trial.points = result.points;
+    run_stages(stronger, k, options, tuning, solver, memory, {}, trial);
+    for (const auto& [phase, seconds] : trial.timings.phases)
+      result.timings.add(phase, seconds);
+    StagesOutcome o{trial.state, 0.0, trial.collapse, trial.stopped.has_value()};
+    for (const PlasticState& p : trial.state.points)
+      o.largest_flow = std::max(o.largest_flow, p.slip);
+    return o;
+  };
+  FactorOfSafety f = find_factor_below_one(model, *options.factor_of_safety, *result.collapse, run);
+  f.stage = fos_stage;
+  return f;
 }
 
 }  // namespace
@@ -184,30 +216,29 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.points = make_yield_points(model);
   IncrementSolver solver(model, k, lower, tuning.solver);
   IncrementMemory memory;
-  run_stages(model, k, options, tuning.candidates, solver, memory, on_increment, result);
-  if (options.factor_of_safety && !result.stopped) {
-    const FactorOfSafetyOptions& fos = *options.factor_of_safety;
-    if (!result.collapse) {
-      result.factor_of_safety =
-          find_factor_of_safety(model, result.points, k, result.state, fos, options,
-                                tuning.candidates, solver, memory, result.timings);
-    } else {
-      // The stages collapse: F < 1. Each trial runs them again, strengths raised, on this K.
-      const StrengthSelection selection = selected_strengths(model, fos);
-      const RunStages run = [&](double factor) {
-        const Model stronger = reduce_strength(model, selection, factor);
-        PlasticResult trial;
-        trial.points = result.points;
-        run_stages(stronger, k, options, tuning.candidates, solver, memory, {}, trial);
-        for (const auto& [phase, seconds] : trial.timings.phases)
-          result.timings.add(phase, seconds);
-        StagesOutcome o{trial.state, 0.0, trial.collapse, trial.stopped.has_value()};
-        for (const PlasticState& p : trial.state.points)
-          o.largest_flow = std::max(o.largest_flow, p.slip);
-        return o;
-      };
-      result.factor_of_safety = find_factor_below_one(model, fos, *result.collapse, run);
-    }
+  if (!options.factor_of_safety) {
+    run_stages(model, k, options, tuning.candidates, solver, memory, on_increment, result);
+    return with_statistics(std::move(result), k, solver, memory);
+  }
+  // The factor of safety after its stage (by default the last), from the state reached there;
+  // it is a part of the phases' times too: its own phase says what F costs over the stages.
+  const FactorOfSafetyOptions& fos = *options.factor_of_safety;
+  const int fos_stage = fos.after_stage.value_or(static_cast<int>(model.stages.size()) - 1);
+  const auto factor_of_safety_after = [&](int stage) {
+    if (stage != fos_stage)
+      return;
+    ScopedTimer t(result.timings, "(factor of safety)");
+    result.factor_of_safety =
+        find_factor_of_safety(model, result.points, k, result.state, fos, options,
+                              tuning.candidates, solver, memory, result.timings);
+    result.factor_of_safety->stage = fos_stage;
+  };
+  run_stages(model, k, options, tuning.candidates, solver, memory, on_increment, result,
+             factor_of_safety_after);
+  if (result.collapse && result.collapse->stage <= fos_stage) {
+    ScopedTimer t(result.timings, "(factor of safety)");
+    result.factor_of_safety =
+        factor_below_one(model, fos_stage, k, options, tuning.candidates, solver, memory, result);
   }
   return with_statistics(std::move(result), k, solver, memory);
 }

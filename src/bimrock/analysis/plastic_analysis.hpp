@@ -60,6 +60,7 @@ struct PlasticResult {
   /// them (CandidateTuning::near_rings).
   int rounds_without_around = 0;
   int zone_blocks = 0;
+  int tangent_factorizations = 0;  ///< of the LCPs' reduced tangents, over the whole analysis
 };
 
 /// Called after every carried increment (e.g. to write its results).

@@ -43,8 +43,9 @@ int run_bench(const BenchOptions& options) {
       const JointFlow flow =
           model == "nonassociated" ? JointFlow::no_dilation : JointFlow::associated;
       for (int rep = 0; rep < options.repetitions; ++rep)
-        runs.push_back(model == "elastic" ? run_elastic(n, scratch)
-                                          : run_plastic(n, options.increments, flow, scratch));
+        runs.push_back(model == "elastic"
+                           ? run_elastic(n, scratch)
+                           : run_plastic(n, options.increments, flow, model == "fos", scratch));
       rows.push_back(summarize(model, runs));
       print_row(rows.back());
       std::fflush(stdout);

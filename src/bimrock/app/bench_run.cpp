@@ -120,23 +120,28 @@ Run run_elastic(int n, const fs::path& scratch) {
   return run;
 }
 
-Run run_plastic(int n, int increments, JointFlow flow, const fs::path& scratch) {
+Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
+                const fs::path& scratch) {
   Run run;
   release_free_memory();
   const double before = static_cast<double>(current_memory_bytes());
   reset_peak_memory();
   auto start = Clock::now();
-  // Pushed to 1.2 times the closed-form collapse thrust: collapses within the stage.
-  const Model model =
-      build_model(abutment_case(n, increments, 1.2 * abutment_collapse_shear(), flow));
+  // Pushed to 1.2 times the closed-form collapse thrust: collapses within the stage; for the
+  // factor of safety, to 0.6 times it: carried, then the strengths reduced to collapse.
+  const double thrust = (factor_of_safety ? 0.6 : 1.2) * abutment_collapse_shear();
+  const Model model = build_model(abutment_case(n, increments, thrust, flow));
+  PlasticOptions options;
+  if (factor_of_safety)
+    options.factor_of_safety = FactorOfSafetyOptions{};
   add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
   double writing = 0.0;
   PlasticResult result;
   std::vector<YieldPoint> points;  // for the verbose lines only
   {
     PlasticResultsWriter writer(model, {}, scratch / "plastic");
-    result =
-        run_plastic_analysis(model, {}, [&](const IncrementRecord& r, const AnalysisState& st) {
+    result = run_plastic_analysis(
+        model, options, [&](const IncrementRecord& r, const AnalysisState& st) {
           const auto w = Clock::now();
           writer.on_increment(r, st);
           if (std::getenv("BIMROCK_BENCH_VERBOSE")) {
@@ -169,7 +174,8 @@ Run run_plastic(int n, int increments, JointFlow flow, const fs::path& scratch) 
   run.increments = static_cast<int>(result.history.size());
   for (const IncrementRecord& h : result.history)
     run.lcp_rows_max = std::max(run.lcp_rows_max, h.lcp_size);
-  run.collapsed = result.collapse.has_value();
+  run.collapsed = result.collapse.has_value() ||
+                  (result.factor_of_safety && result.factor_of_safety->collapse.has_value());
   run.condensations = result.condensations;
   run.reserve_switches = result.reserve_switches;
   run.regions = result.regions;

@@ -31,8 +31,9 @@ struct Run {
 [[nodiscard]] Run run_elastic(int n, const std::filesystem::path& scratch);
 
 /// The plastic model of `n` blocks (abutment_case) pushed past its collapse in `increments`,
-/// joints of `flow`.
-[[nodiscard]] Run run_plastic(int n, int increments, JointFlow flow,
+/// joints of `flow`; or, with `factor_of_safety`, pushed to 0.6 times its collapse thrust and
+/// then its factor of safety found (the phase "(factor of safety)" of its timings).
+[[nodiscard]] Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
                               const std::filesystem::path& scratch);
 
 }  // namespace bimrock::bench

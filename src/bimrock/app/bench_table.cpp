@@ -87,6 +87,11 @@ void print_row(const Row& r) {
   // A growth under 1 MiB (the smallest models) is the allocator's noise: no memory ratio then.
   fmt::print("  ratio to the limit: time {:.2f}, memory {}\n", r.total / r.limit,
              mib(r.limit_peak) >= 1.0 ? fmt::format("{:.2f}", r.run_peak / r.limit_peak) : "-");
+  for (const auto& [phase, s] : r.median_seconds) {
+    if (phase == "(factor of safety)")
+      fmt::print("  factor of safety: {:.3f} s, {:.2f} times the rest of the analysis\n", s,
+                 s / (r.total - s));
+  }
 }
 
 nlohmann::json to_json(const Row& r) {
@@ -124,7 +129,7 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
   LinePlot time{
       "bimrock bench: time of a whole analysis", "blocks", "seconds (median)", {}, true, true};
   LinePlot memory{"bimrock bench: peak memory", "blocks", "MiB", {}, true, true};
-  for (const std::string model : {"elastic", "plastic", "nonassociated"}) {
+  for (const std::string model : {"elastic", "plastic", "nonassociated", "fos"}) {
     PlotSeries t{model + " analysis", {}, {}}, l{model + ": CHOLMOD alone", {}, {}};
     PlotSeries m{model + " analysis", {}, {}}, ml{model + ": CHOLMOD alone", {}, {}};
     for (const Row& r : rows) {

@@ -133,9 +133,11 @@ int main(int argc, char** argv) {
   CLI::App* bench_cmd = app.add_subcommand(
       "bench",
       "time whole analyses of generated models against CHOLMOD alone (docs/performance.md)");
-  bench_cmd->add_option("--models", bench.models, "elastic, plastic, nonassociated")
+  bench_cmd
+      ->add_option("--models", bench.models,
+                   "elastic, plastic, nonassociated, fos (the plastic model's factor of safety)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"elastic", "plastic", "nonassociated"}));
+      ->check(CLI::IsMember({"elastic", "plastic", "nonassociated", "fos"}));
   bench_cmd->add_option("--elastic-sizes", bench.elastic_sizes, "blocks of the elastic brick mass")
       ->delimiter(',');
   bench_cmd

@@ -144,6 +144,7 @@ constexpr std::array kKeys = {
     CaseKey{"factor_of_safety", "materials"},
     CaseKey{"factor_of_safety", "tolerance"},
     CaseKey{"factor_of_safety", "step"},
+    CaseKey{"factor_of_safety", "after_stage"},
     CaseKey{"factor_of_safety", "largest"},
     CaseKey{"limits", "blocks"},
     CaseKey{"limits", "joint_traces"},

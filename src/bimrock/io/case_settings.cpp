@@ -2,6 +2,8 @@
 /// options of a plastic analysis), limits and output.
 #include <bimrock/io/case_sections.hpp>
 
+#include <algorithm>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -97,6 +99,14 @@ FactorOfSafetyOptions read_factor_of_safety(const Value& v, const CaseSpec& spec
     }
     if (names.empty())
       x->fail("name at least one material, or leave the key out to reduce every strength");
+  }
+  if (const auto x = m.find("after_stage")) {
+    const std::string stage = name(*x);
+    const auto named = std::find_if(spec.stages.begin(), spec.stages.end(),
+                                    [&](const StageSpec& st) { return st.name == stage; });
+    if (named == spec.stages.end())
+      x->fail("no stage is named '" + stage + "'");
+    o.after_stage = static_cast<int>(named - spec.stages.begin());
   }
   return o;
 }

@@ -96,7 +96,7 @@ void write_factor_of_safety(const Model& model, const PlasticResult& result, con
         {fmt::format("mechanism at F = {:.4g} (red: slipping joints, blue: opening)",
                      f.collapse->failed),
          f.collapse->direction, 0.08, mechanism_marks(model, result.points, *f.collapse), 1000,
-         water_surface(model, static_cast<int>(model.stages.size()) - 1)},
+         water_surface(model, f.stage)},
         dir / "fos_mechanism");
     files.insert(files.end(), {"fos_mechanism.png", "fos_mechanism.svg"});
   }

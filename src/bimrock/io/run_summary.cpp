@@ -99,9 +99,16 @@ json mechanism_joints_json(const std::vector<YieldPoint>& points,
 json factor_of_safety_json(const Model& model, const std::vector<YieldPoint>& points,
                            const FactorOfSafety& f) {
   json trials = json::array();
-  for (const FactorTrial& t : f.trials)
-    trials.push_back({{"factor", t.factor}, {"largest_flow", t.largest_flow}});
-  json out = {{"lower", f.lower},
+  for (const FactorTrial& t : f.trials) {
+    json monitors = json::object();
+    for (std::size_t m = 0; m < model.monitors.size() && m < t.monitors.size(); ++m)
+      monitors[model.monitors[m].name] = {t.monitors[m].x(), t.monitors[m].y()};
+    trials.push_back({{"factor", t.factor},
+                      {"largest_flow_m", t.largest_flow},
+                      {"monitor_displacements_m", monitors}});
+  }
+  json out = {{"after_stage", model.stages[static_cast<std::size_t>(f.stage)].name},
+              {"lower", f.lower},
               {"upper", f.collapse ? json(f.collapse->failed) : json()},
               {"largest_tried", f.largest},
               {"undecided", f.undecided},
@@ -186,6 +193,10 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
     } else {
       j["collapse"] = nullptr;
     }
+    // K once, again in another order for each zone or region it was condensed onto; the
+    // reduced tangents of the LCPs besides. The strengths of a factor of safety change none.
+    j["factorizations"] = {{"stiffness", 1 + plastic->condensations + plastic->regions},
+                           {"tangents", plastic->tangent_factorizations}};
     if (plastic->factor_of_safety)
       j["factor_of_safety"] =
           factor_of_safety_json(model, plastic->points, *plastic->factor_of_safety);
