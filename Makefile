@@ -93,7 +93,7 @@ bench: bench-deps
 	./build/bench/bench/bimrock_bench
 
 format:
-	find src tests bench fuzz -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+	find src tests bench fuzz python examples -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
 
 clean:
 	rm -rf build
