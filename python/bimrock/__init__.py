@@ -110,8 +110,10 @@ class Case:
         """Analyses the case: elastic without stages; else the stages and, with a
         factor_of_safety section, the factor of safety. progress(info), if given, is called after
         every carried increment with a dict (stage, stage_name, increment, increments,
-        stage_factor, seconds). Ctrl-C (or an exception raised by progress) stops the analysis at
-        the next increment and is raised here; the case can be run again."""
+        stage_factor, seconds), and after every F the factor of safety's search carried
+        (stage_name 'factor of safety', stage_factor F). Ctrl-C (or an exception raised by
+        progress) stops the analysis at the next increment or trial and is raised here; the
+        case can be run again."""
         return Result(self._core.run(progress))
 
     @property

@@ -1,6 +1,7 @@
 // bimrock._core: the library's cases, analyses and results for Python (docs/python.md). The
 // package bimrock (python/bimrock/__init__.py) wraps it; the user's API is there.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -215,10 +216,31 @@ struct CaseModel {
       if (PyErr_CheckSignals() != 0)
         throw py::error_already_set();
     };
+    // The factor of safety's search: one call per F carried, as a stage named "factor of
+    // safety" after the case's stages, its stage_factor F.
+    int trials = 0;
+    auto last = std::chrono::steady_clock::now();
+    const auto on_trial = [&](const FactorTrial& t) {
+      const auto now = std::chrono::steady_clock::now();
+      const py::gil_scoped_acquire acquire;
+      if (progress) {
+        py::dict info;
+        info["stage"] = model->stages.size();
+        info["stage_name"] = "factor of safety";
+        info["increment"] = ++trials;
+        info["increments"] = py::none();
+        info["stage_factor"] = t.factor;
+        info["seconds"] = std::chrono::duration<double>(now - last).count();
+        (*progress)(info);
+      }
+      last = now;
+      if (PyErr_CheckSignals() != 0)
+        throw py::error_already_set();
+    };
     PlasticResult p;
     {
       const py::gil_scoped_release release;
-      p = run_plastic_analysis(*model, c->plastic, on_increment);
+      p = run_plastic_analysis(*model, c->plastic, on_increment, {}, on_trial);
     }
     // The last carried state, kept for the folder's last step whatever the thinning.
     if (every > 0 && !r.increments.empty() && !r.increments.back().state)

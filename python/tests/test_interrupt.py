@@ -66,3 +66,20 @@ def test_an_exception_of_the_progress_callback_ends_the_run():
     with pytest.raises(Enough):
         case.run(progress=progress)
     assert case.run().collapse is not None
+
+
+def test_the_factor_of_safety_search_reports_its_trials_and_stops_when_asked():
+    case = bimrock.Case.from_file(example("plane_failure", "case.yaml"))
+    whole = case.run()
+    trials = []
+    case.run(progress=lambda info: trials.append(info))
+    searched = [i["stage_factor"] for i in trials if i["stage_name"] == "factor of safety"]
+    assert searched == whole.factor_of_safety["trials"][1:].tolist()  # F = 1 is the start
+
+    def progress(info):
+        if info["stage_name"] == "factor of safety" and info["increment"] == 3:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        case.run(progress=progress)
+    assert case.run().factor_of_safety["lower"] == whole.factor_of_safety["lower"]

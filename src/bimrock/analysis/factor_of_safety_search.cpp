@@ -13,7 +13,7 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
-                                     Timings& timings) {
+                                     Timings& timings, const FactorTrialCallback& on_trial) {
   const StrengthSelection selection =
       fos.selection.joint_materials.empty() && fos.selection.block_materials.empty()
           ? all_strengths(model)
@@ -49,6 +49,8 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
     out.trials.push_back(
         {out.lower, t.lambda.size() > 0 ? t.lambda.cwiseAbs().maxCoeff() : 0.0, monitors(state.u)});
     last = t;
+    if (on_trial)
+      on_trial(out.trials.back());
   };
   const SteppingOptions stepping{fos.tolerance, options.max_bisections, false, false};
   while (state.stage_factor < fos.largest * (1.0 - 1e-12)) {

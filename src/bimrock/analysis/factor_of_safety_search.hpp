@@ -16,6 +16,6 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
-                                     Timings& timings);
+                                     Timings& timings, const FactorTrialCallback& on_trial = {});
 
 }  // namespace bimrock

@@ -105,7 +105,8 @@ PlasticResult with_statistics(PlasticResult result, const SparseCholesky& k,
 
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& options,
                                    const IncrementCallback& on_increment,
-                                   const PlasticTuning& tuning) {
+                                   const PlasticTuning& tuning,
+                                   const FactorTrialCallback& on_factor_trial) {
   const KeptFactorMemoryRelease release_at_end;  // declared first: runs after the factors go
   PlasticResult result;
   {
@@ -177,9 +178,9 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     }
   }
   if (options.factor_of_safety)
-    result.factor_of_safety =
-        find_factor_of_safety(model, result.points, k, result.state, *options.factor_of_safety,
-                              options, tuning.candidates, solver, memory, result.timings);
+    result.factor_of_safety = find_factor_of_safety(
+        model, result.points, k, result.state, *options.factor_of_safety, options,
+        tuning.candidates, solver, memory, result.timings, on_factor_trial);
   return with_statistics(std::move(result), k, solver, memory);
 }
 
