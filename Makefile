@@ -5,7 +5,10 @@ DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
   libeigen3-dev libsuitesparse-dev libcgal-dev libyaml-cpp-dev libcli11-dev libfmt-dev \
   nlohmann-json3-dev libglpk-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libopenblas0-pthread python3-meshio python3-numpy \
+  pybind11-dev python3-dev python3-pytest python3-matplotlib python3-scipy \
   clang libclang-rt-14-dev
+# pybind11-dev and python3-dev build the Python module (docs/python.md); pytest runs its tests,
+# matplotlib draws the Python example's plot, scipy is the neighbour one test runs it beside.
 # clang and its compiler runtime (libFuzzer, ASan, UBSan: libclang-rt-14-dev, which clang only
 # recommends) build the fuzz targets (docs/fuzzing.md).
 # Optional peers the benchmarks compare with, installed by `make bench` only (bench/CMakeLists.txt
@@ -90,7 +93,7 @@ bench: bench-deps
 	./build/bench/bench/bimrock_bench
 
 format:
-	find src tests bench fuzz -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
+	find src tests bench fuzz python examples -name '*.cpp' -o -name '*.hpp' | xargs clang-format -i
 
 clean:
 	rm -rf build

@@ -4,10 +4,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include <bimrock/solve/factor_memory.hpp>
+
 #include "bimrock/app/openmp_environment.hpp"
 
 int main(int argc, char** argv) {
   bimrock::ensure_openmp_environment(argv);
+  bimrock::install_factor_memory();  // as the command does
   // A fixed threshold for glibc's mmap (its default, 128 KiB) turns off the sliding one, which
   // rises to the largest block freed, up to 32 MiB: with it, a kernel repeated on a 10^4-block
   // model (K's arrays ~20 MB) reused warm pages while one on 10^5 blocks (~200 MB) faulted fresh

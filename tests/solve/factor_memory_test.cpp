@@ -10,6 +10,8 @@
 
 #include <Eigen/Sparse>
 
+#include <SuiteSparse_config.h>
+
 #include <bimrock/solve/factor_memory.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
@@ -144,7 +146,27 @@ CholmodMatrix laplacian(int side) {
   return lower;
 }
 
+// The allocator is a setting of the process: a factorization does not install it (a library
+// user's other SuiteSparse code keeps malloc), an explicit call does. (ctest runs each test in a
+// process of its own, so no earlier test has installed it.)
+TEST(FactorMemory, OnlyAnExplicitCallInstallsIt) {
+  const CholmodMatrix lower = laplacian(60);
+  const FactorMemoryStats before = factor_memory_stats();
+  {
+    SparseCholesky k;
+    k.analyze(lower, 6);
+    ASSERT_TRUE(k.factorize(lower));
+    ASSERT_GE(8 * k.factor_nonzeros(), static_cast<std::int64_t>(kLarge));
+  }
+  EXPECT_EQ(factor_memory_stats().mapped, before.mapped);
+  EXPECT_TRUE(SuiteSparse_config.malloc_func != &factor_malloc);
+  install_factor_memory();
+  EXPECT_TRUE(SuiteSparse_config.malloc_func == &factor_malloc);
+  EXPECT_TRUE(SuiteSparse_config.free_func == &factor_free);
+}
+
 TEST(FactorMemory, AFactorInRecycledMemorySolvesToRoundOff) {
+  install_factor_memory();
   release_kept_factor_memory();
   const int side = 60;
   const CholmodMatrix lower = laplacian(side);

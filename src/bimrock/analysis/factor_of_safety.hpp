@@ -4,6 +4,7 @@
 /// (strength_reduction.hpp), each step one increment of LCPs with no load on the same factor of
 /// K, until a step is proven to have no solution; that step is bisected until the largest F
 /// carried and the smallest F proven to fail are within the tolerance.
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -30,6 +31,9 @@ struct FactorTrial {
   double largest_flow = 0.0;
   std::vector<Vec2> monitors;
 };
+
+/// Called after every F the search carried (e.g. to report progress).
+using FactorTrialCallback = std::function<void(const FactorTrial&)>;
 
 struct FactorOfSafety {
   int stage = 0;         ///< the stage after which F was found

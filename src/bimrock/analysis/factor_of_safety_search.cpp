@@ -19,7 +19,7 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
-                                     Timings& timings) {
+                                     Timings& timings, const FactorTrialCallback& on_trial) {
   const StrengthSelection selection = selected_strengths(model, fos);
   // The strength reduction is a stage of no load whose factor is F itself: the yield functions
   // of the reduced strengths are violated at the state carried, and each step's LCP finds the
@@ -52,6 +52,8 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
     out.trials.push_back(
         {out.lower, t.lambda.size() > 0 ? t.lambda.cwiseAbs().maxCoeff() : 0.0, monitors(state.u)});
     last = t;
+    if (on_trial)
+      on_trial(out.trials.back());
   };
   const SteppingOptions stepping{fos.tolerance, options.max_bisections, false, false};
   while (state.stage_factor < fos.largest * (1.0 - 1e-12)) {
@@ -73,7 +75,8 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
 }
 
 FactorOfSafety find_factor_below_one(const Model& model, const FactorOfSafetyOptions& fos,
-                                     const Collapse& at_one, const RunStages& run) {
+                                     const Collapse& at_one, const RunStages& run,
+                                     const FactorTrialCallback& on_trial) {
   FactorOfSafety out;
   out.largest = fos.largest;
   out.lower = 0.0;
@@ -98,6 +101,8 @@ FactorOfSafety find_factor_below_one(const Model& model, const FactorOfSafetyOpt
     for (const Monitor& m : model.monitors)
       monitors.push_back(displacement_at(model, m.block, m.point, o.state.u));
     out.trials.push_back({factor, o.largest_flow, monitors});
+    if (on_trial)
+      on_trial(out.trials.back());
     return true;
   };
   // Down in steps until a trial carries, then bisection of [lower, upper].

@@ -21,7 +21,7 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
-                                     Timings& timings);
+                                     Timings& timings, const FactorTrialCallback& on_trial = {});
 
 /// The stages of a model, run again from the unloaded state with its strengths divided by a
 /// factor: carried (with the state at their end and its largest accumulated plastic slip),
@@ -40,6 +40,7 @@ using RunStages = std::function<StagesOutcome(double factor)>;
 /// bisected between the largest F that carries them and the smallest that collapses, to
 /// `fos.tolerance`. `lower` is 0 where even 1 / `fos.largest` collapses.
 FactorOfSafety find_factor_below_one(const Model& model, const FactorOfSafetyOptions& fos,
-                                     const Collapse& at_one, const RunStages& run);
+                                     const Collapse& at_one, const RunStages& run,
+                                     const FactorTrialCallback& on_trial = {});
 
 }  // namespace bimrock

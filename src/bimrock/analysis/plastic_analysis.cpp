@@ -167,7 +167,7 @@ void run_stages(const Model& model, const SparseCholesky& k, const PlasticOption
 FactorOfSafety factor_below_one(const Model& model, int fos_stage, const SparseCholesky& k,
                                 const PlasticOptions& options, const CandidateTuning& tuning,
                                 IncrementSolver& solver, IncrementMemory& memory,
-                                PlasticResult& result) {
+                                PlasticResult& result, const FactorTrialCallback& on_trial) {
   Model until = model;
   until.stages.resize(static_cast<std::size_t>(fos_stage) + 1);
   const StrengthSelection selection = selected_strengths(model, *options.factor_of_safety);
@@ -183,7 +183,8 @@ FactorOfSafety factor_below_one(const Model& model, int fos_stage, const SparseC
       o.largest_flow = std::max(o.largest_flow, p.slip);
     return o;
   };
-  FactorOfSafety f = find_factor_below_one(model, *options.factor_of_safety, *result.collapse, run);
+  FactorOfSafety f =
+      find_factor_below_one(model, *options.factor_of_safety, *result.collapse, run, on_trial);
   f.stage = fos_stage;
   return f;
 }
@@ -192,7 +193,8 @@ FactorOfSafety factor_below_one(const Model& model, int fos_stage, const SparseC
 
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& options,
                                    const IncrementCallback& on_increment,
-                                   const PlasticTuning& tuning) {
+                                   const PlasticTuning& tuning,
+                                   const FactorTrialCallback& on_factor_trial) {
   const KeptFactorMemoryRelease release_at_end;  // declared first: runs after the factors go
   PlasticResult result;
   {
@@ -230,15 +232,15 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     ScopedTimer t(result.timings, "(factor of safety)");
     result.factor_of_safety =
         find_factor_of_safety(model, result.points, k, result.state, fos, options,
-                              tuning.candidates, solver, memory, result.timings);
+                              tuning.candidates, solver, memory, result.timings, on_factor_trial);
     result.factor_of_safety->stage = fos_stage;
   };
   run_stages(model, k, options, tuning.candidates, solver, memory, on_increment, result,
              factor_of_safety_after);
   if (result.collapse && result.collapse->stage <= fos_stage) {
     ScopedTimer t(result.timings, "(factor of safety)");
-    result.factor_of_safety =
-        factor_below_one(model, fos_stage, k, options, tuning.candidates, solver, memory, result);
+    result.factor_of_safety = factor_below_one(model, fos_stage, k, options, tuning.candidates,
+                                               solver, memory, result, on_factor_trial);
   }
   return with_statistics(std::move(result), k, solver, memory);
 }

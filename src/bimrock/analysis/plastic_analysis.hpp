@@ -66,9 +66,12 @@ struct PlasticResult {
 /// Called after every carried increment (e.g. to write its results).
 using IncrementCallback = std::function<void(const IncrementRecord&, const AnalysisState&)>;
 
-/// Runs every stage of the model. Throws ModelError when the structure is not fully supported.
+/// Runs every stage of the model, then the factor of safety's search where the options ask for
+/// it. Throws ModelError when the structure is not fully supported. A callback may throw to end
+/// the analysis (a caller's interruption): everything it holds is released as it unwinds.
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& options = {},
                                    const IncrementCallback& on_increment = {},
-                                   const PlasticTuning& tuning = {});
+                                   const PlasticTuning& tuning = {},
+                                   const FactorTrialCallback& on_factor_trial = {});
 
 }  // namespace bimrock

@@ -17,6 +17,7 @@
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/io/output_folder.hpp>
 #include <bimrock/io/results_writer.hpp>
+#include <bimrock/solve/factor_memory.hpp>
 
 #include "bimrock/app/bench_command.hpp"
 #include "bimrock/app/mesh_command.hpp"
@@ -103,6 +104,7 @@ int check(const std::string& case_file, bool quiet) {
 
 int main(int argc, char** argv) {
   bimrock::ensure_openmp_environment(argv);
+  bimrock::install_factor_memory();  // the process's settings are the command's to make
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
   CLI::App app{"bimrock: block-interfaces model of jointed rock masses (SI units)"};

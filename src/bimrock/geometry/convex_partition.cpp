@@ -6,6 +6,7 @@
 #include <utility>
 
 #include <CGAL/Partition_traits_2.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/partition_2.h>
 #include <CGAL/partition_is_valid_2.h>
 #include <CGAL/property_map.h>
@@ -48,31 +49,31 @@ std::vector<std::vector<std::size_t>> convex_pieces(std::vector<Point>& corners,
     index[k] = k;
   const PartitionTraits traits(CGAL::make_property_map(corners));
   std::vector<PartitionTraits::Polygon_2> pieces;
-  const auto valid = [&] {
+  // A guard around a bug of CGAL's optimal convex partition (5.5, open upstream): on some faces,
+  // e.g. one with three nearly collinear corners beside a notched hole, it returns a piece with
+  // reflex corners. CGAL checks its result only in debug builds (a postcondition, which throws
+  // there); in release nothing does. Checked here in every build: a partition that is not convex,
+  // or that CGAL refuses, is replaced by the approximation's, which holds.
+  const auto partition = [&](auto&& partition_2) {
+    pieces.clear();
+    try {
+      partition_2(index.begin(), index.end(), std::back_inserter(pieces), traits);
+    } catch (const CGAL::Failure_exception&) {
+      pieces.clear();
+      return false;
+    }
     return CGAL::convex_partition_is_valid_2(index.begin(), index.end(), pieces.begin(),
                                              pieces.end(), traits);
   };
-  if (m <= static_cast<std::size_t>(max_optimal_vertices)) {
-    CGAL::optimal_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces),
-                                     traits);
-    // A guard around a bug of CGAL's optimal convex partition (5.5, open upstream): on some
-    // faces, e.g. one with three nearly collinear corners beside a notched hole, it returns a
-    // piece with reflex corners. CGAL checks its result only in debug builds (a postcondition,
-    // an exception there; nothing in release, where the second partition pass after the sliver
-    // merge may or may not mend it). Checked here in every build: a partition that is not
-    // convex is replaced by the approximation's, which holds.
-    if (!valid())
-      pieces.clear();
-  }
-  if (pieces.empty()) {
-    CGAL::approx_convex_partition_2(index.begin(), index.end(), std::back_inserter(pieces), traits);
-    if (!valid()) {
-      const Vec2 at = to_vec2(corners.front());
-      throw GeometryError("domain", "a face of the cut blocks near (" + std::to_string(at.x()) +
-                                        ", " + std::to_string(at.y()) +
-                                        ") could not be split into convex blocks; move a joint "
-                                        "or the outline there a little");
-    }
+  const auto optimal = [](auto... args) { CGAL::optimal_convex_partition_2(args...); };
+  const auto approximate = [](auto... args) { CGAL::approx_convex_partition_2(args...); };
+  const bool small = m <= static_cast<std::size_t>(max_optimal_vertices);
+  if (!(small && partition(optimal)) && !partition(approximate)) {
+    const Vec2 at = to_vec2(corners.front());
+    throw GeometryError("domain", "a face of the cut blocks near (" + std::to_string(at.x()) +
+                                      ", " + std::to_string(at.y()) +
+                                      ") could not be split into convex blocks; move a joint "
+                                      "or the outline there a little");
   }
   std::vector<std::vector<std::size_t>> out;
   out.reserve(pieces.size());

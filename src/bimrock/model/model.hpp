@@ -115,6 +115,13 @@ struct Model {
 /// Whether the supports hold every block is checked by the analysis (it needs K).
 Model build_model(const CaseSpec& spec);
 
+/// The model of `spec` on the geometry of `built` (its blocks, interfaces and outline), which
+/// build_model() made from a spec with the same blocks (or domain or mesh), joints and supports:
+/// only the materials, the interfaces' springs, the loads, the monitors and the stages are made
+/// anew, so that a study that varies those pays for its analyses only. The materials must keep
+/// the built model's names, order and subdivisions. Throws InputError as build_model() does.
+Model rebuild_model(const Model& built, const CaseSpec& spec);
+
 /// Index of the block containing p (within tol), or -1. Linear scan: for a few points only.
 int find_block_containing(const Model& model, const Vec2& p);
 

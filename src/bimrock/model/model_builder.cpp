@@ -47,6 +47,40 @@ class Builder {
     return std::move(model_);
   }
 
+  // The spec's materials, springs, loads, monitors and stages on the blocks, interfaces and
+  // outline of `built`, whose spec had the same blocks, joints and supports: the geometry, the
+  // costly part, is not made again.
+  Model rebuild(const Model& built) {
+    model_.source_file = spec_.file;
+    model_.title = spec_.title;
+    model_.blocks = built.blocks;
+    model_.interfaces = built.interfaces;
+    model_.boundary = built.boundary;
+    model_.tolerance = built.tolerance;
+    check_settings();
+    add_materials();
+    check_same_materials(built);
+    for (Interface& f : model_.interfaces) {
+      const SpringPair k_ns = springs(f.joint_material, f.block_i, f.block_j);
+      f.normal_stiffness = k_ns.normal;
+      f.shear_stiffness = k_ns.shear;
+      if (f.support >= 0) {
+        if (f.support >= static_cast<int>(spec_.supports.size()))
+          fail({0, "supports"}, "the supports differ from the built model's: build a new model");
+        if (spec_.supports[static_cast<std::size_t>(f.support)].kind == SupportKind::roller)
+          f.shear_stiffness = 0.0;
+      }
+    }
+    polygons_.reserve(model_.blocks.size());
+    for (const Block& b : model_.blocks)
+      polygons_.push_back(b.polygon);
+    locate_points();
+    add_loads();
+    add_monitors();
+    add_stages();
+    return std::move(model_);
+  }
+
  private:
   [[noreturn]] void fail(const SourceRef& ref, const std::string& message) const {
     throw InputError(spec_.file, ref, message);
@@ -89,6 +123,40 @@ class Builder {
         fail(j.source, "subdivisions must be at least 1");
       joint_material_index_[j.name] = static_cast<int>(model_.joint_materials.size());
       model_.joint_materials.push_back(j);
+    }
+  }
+
+  // The blocks and interfaces of a built model refer to its materials by index, and its
+  // interfaces were split by their joint material's subdivisions: a rebuild keeps the names, their
+  // order and the subdivisions (the intact rock's continuum material, added by the builder, again).
+  void check_same_materials(const Model& built) {
+    const auto& blocks = model_.block_materials;
+    const auto& before = built.block_materials;
+    if (blocks.size() != before.size())
+      fail({0, "materials"}, "gives other materials than the built model's: build a new model");
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+      if (blocks[k].name != before[k].name)
+        fail(blocks[k].source, "is not the built model's material " + quoted(before[k].name) +
+                                   " (keep the names and their order, or build a new model)");
+    }
+    const std::size_t given = model_.joint_materials.size();
+    if (given + 1 == built.joint_materials.size() &&
+        built.joint_materials.back().kind == JointMaterial::Kind::continuum)
+      intact_material("", built.joint_materials.back().source);
+    const auto& joints = model_.joint_materials;
+    const auto& joints_before = built.joint_materials;
+    if (joints.size() != joints_before.size())
+      fail({0, "joint_materials"},
+           "gives other joint materials than the built model's: build a new model");
+    for (std::size_t k = 0; k < joints.size(); ++k) {
+      if (joints[k].name != joints_before[k].name)
+        fail(joints[k].source, "is not the built model's joint material " +
+                                   quoted(joints_before[k].name) +
+                                   " (keep the names and their order, or build a new model)");
+      if (joints[k].subdivisions != joints_before[k].subdivisions ||
+          joints[k].integration != joints_before[k].integration)
+        fail(joints[k].source,
+             "changes the subdivisions or the integration of the interfaces: build a new model");
     }
   }
 
@@ -467,6 +535,10 @@ class Builder {
 
 Model build_model(const CaseSpec& spec) {
   return Builder(spec).build();
+}
+
+Model rebuild_model(const Model& built, const CaseSpec& spec) {
+  return Builder(spec).rebuild(built);
 }
 
 int find_block_containing(const Model& model, const Vec2& p) {

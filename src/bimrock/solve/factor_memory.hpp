@@ -7,9 +7,12 @@
 /// mapping without touching the pages it keeps): the new factor's pages neither fault in nor
 /// are zeroed again, and the peak memory stays the same.
 ///
-/// Installed for the whole process (SuiteSparse's allocator is global) by the first
-/// SparseCholesky. At most kKeptFactorBlocks freed blocks are kept; release_kept_factor_memory()
-/// unmaps them (at the end of an analysis, and before a memory measurement).
+/// A setting of the whole process (SuiteSparse's allocator is global, and other code in the
+/// process may use SuiteSparse too), so it is never made as a side effect: the bimrock command
+/// and the benchmarks call install_factor_memory() first thing, and a program that links the
+/// library may. Without it CHOLMOD allocates with malloc, and the results are the same. At most
+/// kKeptFactorBlocks freed blocks are kept; release_kept_factor_memory() unmaps them (at the end
+/// of an analysis, and before a memory measurement).
 #include <cstddef>
 #include <cstdint>
 

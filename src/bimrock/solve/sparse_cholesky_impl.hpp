@@ -94,7 +94,6 @@ struct SparseCholesky::Impl {
   }
 
   Impl() {
-    install_factor_memory();  // before CHOLMOD's first block
     cholmod_l_start(&common);
     common.print = 0;  // we report failures ourselves
   }
