@@ -44,6 +44,16 @@ def _to_text(document):
     return json.dumps(document, default=_plain, allow_nan=True)
 
 
+def _moved(polygon, centroid, d):
+    """The corners of a block moved by its unknowns d = [u0, v0, theta, eps_x, eps_y, gamma_xy]
+    (eq. 1: u = Q(x, y) d about the centroid)."""
+    x = polygon[:, 0] - centroid[0]
+    y = polygon[:, 1] - centroid[1]
+    u = d[0] - y * d[2] + x * d[3] + 0.5 * y * d[5]
+    v = d[1] + x * d[2] + y * d[4] + 0.5 * x * d[5]
+    return polygon + np.column_stack((u, v))
+
+
 class Case:
     """A case read and its model built (blocks cut, interfaces found, materials and loads
     resolved). Make one with from_file() or from_dict(); run() analyses it, update() changes
@@ -151,7 +161,8 @@ class Result:
 
     @property
     def blocks(self):
-        """dict of arrays, one row per block: centroids (n, 2) [m], areas (n,) [m^2], material
+        """dict of arrays, one row per block: polygons (a list of (k, 2) corners, counter-
+        clockwise) [m], centroids (n, 2) [m], areas (n,) [m^2], material
         (n,) index, unknowns (n, 6) [u0, v0, theta, eps_x, eps_y, gamma_xy] (eq. 1), strains
         (n, 3), stresses (n, 3) [sigma_x, sigma_y, tau_xy] [Pa], plastic_strains (n, 3)."""
         return self._core.blocks
@@ -205,6 +216,61 @@ class Result:
     def timings(self):
         """phase -> wall-clock seconds."""
         return self._core.timings
+
+    def plot_blocks(self, ax=None, magnification=None, mechanism=False):
+        """Draws the blocks with matplotlib, coloured by material, displaced by their unknowns
+        (eq. 1) magnified `magnification` times (None: the largest corner displacement shown as
+        5% of the model's size), over the undisplaced outline in grey. With `mechanism`, the
+        collapse's (or the factor of safety's) mechanism velocities instead. Returns the axes."""
+        import matplotlib.pyplot as plt
+        from matplotlib.collections import PolyCollection
+
+        blocks = self.blocks
+        d = blocks["unknowns"]
+        if mechanism:
+            source = self.collapse or self.factor_of_safety
+            if source is None or "mechanism" not in source:
+                raise ValueError("this run has no mechanism to draw")
+            d = source["mechanism"]["block_velocities"]
+        moved = [_moved(p, c, u) for p, c, u in zip(blocks["polygons"], blocks["centroids"], d)]
+        corners = np.vstack(blocks["polygons"])
+        size = float(np.hypot(*(corners.max(axis=0) - corners.min(axis=0))))
+        largest = max((float(np.abs(m - p).max()) for m, p in zip(moved, blocks["polygons"])),
+                      default=0.0)
+        if magnification is None:
+            magnification = 0.05 * size / largest if largest > 0.0 else 1.0
+        shown = [p + magnification * (m - p) for m, p in zip(moved, blocks["polygons"])]
+        if ax is None:
+            _, ax = plt.subplots(figsize=(8, 6))
+        ax.add_collection(PolyCollection(blocks["polygons"], facecolors="none",
+                                         edgecolors="0.75", linewidths=0.5))
+        colours = plt.get_cmap("Pastel1")(blocks["material"] % 9)
+        ax.add_collection(PolyCollection(shown, facecolors=colours, edgecolors="0.3",
+                                         linewidths=0.5))
+        ax.autoscale_view()
+        ax.set_aspect("equal")
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+        ax.set_title(f"{'mechanism' if mechanism else 'displacements'} x {magnification:.3g}")
+        return ax
+
+    def plot_history(self, monitor=None, ax=None):
+        """Draws each carried increment's stage factor against a monitor's displacement (its
+        magnitude [m]; the first monitor by default) with matplotlib. Returns the axes."""
+        import matplotlib.pyplot as plt
+
+        history = self.history
+        if not history or not history["monitors"]:
+            raise ValueError("a nonlinear run with a monitor has a history to plot")
+        name = monitor if monitor is not None else next(iter(history["monitors"]))
+        u = np.hypot(*np.asarray(history["monitors"][name]).T)
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6, 4))
+        ax.plot(u, history["stage_factor"], "o-", markersize=3)
+        ax.set_xlabel(f"displacement of monitor {name} [m]")
+        ax.set_ylabel("stage factor")
+        ax.grid(True, alpha=0.3)
+        return ax
 
     def write(self, folder):
         """Writes the results folder `bimrock run` writes for this case (docs/results.md): all or

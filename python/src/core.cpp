@@ -288,7 +288,18 @@ py::dict blocks_of(const Result& r) {
       p(k, i) = st.plastic(i);
     }
   }
+  py::list polygons;  // each block's corners (k, 2) [m], counter-clockwise
+  for (const Block& b : m.blocks) {
+    Array corners = matrix(b.polygon.vertices.size(), 2);
+    auto v = corners.mutable_unchecked<2>();
+    for (std::size_t j = 0; j < b.polygon.vertices.size(); ++j) {
+      v(j, 0) = b.polygon.vertices[j].x();
+      v(j, 1) = b.polygon.vertices[j].y();
+    }
+    polygons.append(corners);
+  }
   py::dict out;
+  out["polygons"] = polygons;
   out["centroids"] = centroids;
   out["areas"] = areas;
   out["material"] = material;
