@@ -6,9 +6,11 @@ DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
   nlohmann-json3-dev libglpk-dev libcairo2-dev libgtest-dev libgmock-dev libbenchmark-dev \
   libopenblas0-pthread python3-meshio python3-numpy \
   pybind11-dev python3-dev python3-pytest python3-matplotlib python3-scipy \
+  jupyter-nbconvert python3-ipykernel \
   clang libclang-rt-14-dev
 # pybind11-dev and python3-dev build the Python module (docs/python.md); pytest runs its tests,
-# matplotlib draws the Python example's plot, scipy is the neighbour one test runs it beside.
+# matplotlib draws the Python example's plot, scipy is the neighbour one test runs it beside;
+# nbconvert and the Python kernel execute the example notebook.
 # clang and its compiler runtime (libFuzzer, ASan, UBSan: libclang-rt-14-dev, which clang only
 # recommends) build the fuzz targets (docs/fuzzing.md).
 # Optional peers the benchmarks compare with, installed by `make bench` only (bench/CMakeLists.txt
