@@ -78,12 +78,12 @@ void add_pieces(const WetFace& face, const WaterSpec& water, double tol,
       cuts.push_back(covered[k]->second);
     }
   }
-  if (s.b.x() != s.a.x()) {
-    for (const Vec2& v : water.surface) {
-      const double t = (v.x() - s.a.x()) / (s.b.x() - s.a.x());
-      if (t > 0.0 && t < 1.0)
-        cuts.push_back(t);
-    }
+  if (s.b.x() != s.a.x()) {  // the surface's points above the face (x increasing: a search)
+    const auto x_of = [](const Vec2& v, double x) { return v.x() < x; };
+    const auto first = std::lower_bound(water.surface.begin(), water.surface.end(),
+                                        std::min(s.a.x(), s.b.x()), x_of);
+    for (auto v = first; v != water.surface.end() && v->x() < std::max(s.a.x(), s.b.x()); ++v)
+      cuts.push_back((v->x() - s.a.x()) / (s.b.x() - s.a.x()));
   }
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
