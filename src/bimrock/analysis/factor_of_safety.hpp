@@ -3,7 +3,9 @@
 /// equilibrium state the stages reached, the strengths are divided by F = 1 + dF, 1 + 2 dF, ...
 /// (strength_reduction.hpp), each step one increment of LCPs with no load on the same factor of
 /// K, until a step is proven to have no solution; that step is bisected until the largest F
-/// carried and the smallest F proven to fail are within the tolerance.
+/// carried and the smallest F proven to fail are within the tolerance. Where the stages
+/// themselves collapse, F < 1: each trial runs them again with the strengths divided by F < 1
+/// (factor_of_safety_search.hpp).
 #include <functional>
 #include <optional>
 #include <vector>
