@@ -23,6 +23,6 @@ def run_command(case_file, out):
     return pathlib.Path(out)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="module")  # once per test file: the run takes a fraction of a second
 def pull_out_command(tmp_path_factory):
     return run_command(example("pull_out", "case.yaml"), tmp_path_factory.mktemp("cmd") / "pull_out")
