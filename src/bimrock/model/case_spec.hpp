@@ -110,13 +110,46 @@ struct DisplacementControlSpec {
   SourceRef source;
 };
 
+/// Choosing blocks (stages' `excavate` and `install`): those whose centroid lies in a region
+/// (a polygon) or a box, those of a block material, or a list of block indices.
+struct BlockSelector {
+  enum class Kind { region, box, material, list };
+  Kind kind = Kind::region;
+  Polygon region;                ///< kind region [m]
+  BBox box;                      ///< kind box [m]
+  std::string material;          ///< kind material: a block material's name
+  std::vector<int> blocks;       ///< kind list: indices in the model's order of blocks
+  SourceRef source;
+};
+
 /// A load stage of a nonlinear analysis: its loads are added to those of the earlier stages in
 /// `increments` equal steps; stresses and plastic state carry from one stage into the next.
+/// A stage can also excavate blocks (the forces they exerted on the others are released over
+/// its increments, `release` of them in this stage and the rest in the next) and install blocks
+/// absent until then.
 struct StageSpec {
   std::string name;
   LoadsSpec loads;
   int increments = 1;
   std::optional<DisplacementControlSpec> control;
+  std::optional<BlockSelector> excavate;
+  std::optional<BlockSelector> install;
+  double release = 1.0;  ///< fraction of the unreleased excavation forces released, (0, 1]
+  SourceRef source;
+};
+
+/// The stress in the rock before the first stage (docs/case-file.md, "Initial stress"): a
+/// uniform part plus, if given, a gravitational one, sigma_yy = -unit_weight * (ground_level -
+/// y) below the ground level (0 above it) and sigma_xx = k0 * sigma_yy. Tension positive [Pa].
+struct InitialStressSpec {
+  Eigen::Vector3d uniform = Eigen::Vector3d::Zero();  ///< [sigma_xx, sigma_yy, tau_xy] [Pa]
+  struct Gravity {
+    double ground_level = 0.0;  ///< y of the ground surface [m]
+    double unit_weight = 0.0;   ///< [N/m^3]
+    double k0 = 1.0;            ///< horizontal / vertical stress
+  };
+  std::optional<Gravity> gravity;
+  bool allow_yield = false;  ///< points that violate their strength yield in the first stage
   SourceRef source;
 };
 
@@ -180,6 +213,7 @@ struct CaseSpec {
   std::vector<SupportSpec> supports;
   LoadsSpec loads;                ///< the loads of an elastic analysis (no stages)
   std::vector<StageSpec> stages;  ///< a nonlinear analysis when not empty
+  std::optional<InitialStressSpec> initial_stress;  ///< stages only
   std::vector<MonitorSpec> monitors;
   CaseLimits limits;
 };
