@@ -115,7 +115,8 @@ void Candidates::join_around(const std::set<std::pair<int, int>>& flow) {
                      tuning_.near_rings);
   for (std::size_t p = 0; p < candidacy_.size(); ++p) {
     const YieldPoint& point = points_[p];
-    if (candidacy_[p] == kNone && blocks[static_cast<std::size_t>(point.block_i)] &&
+    if (candidacy_[p] == kNone && predicted_.largest(p) > kAbsentPoint &&
+        blocks[static_cast<std::size_t>(point.block_i)] &&
         (point.block_j == kGround || blocks[static_cast<std::size_t>(point.block_j)]))
       candidacy_[p] = kAround;
   }

@@ -19,7 +19,8 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
-                                     Timings& timings, const FactorTrialCallback& on_trial) {
+                                     Timings& timings, const FactorTrialCallback& on_trial,
+                                     const std::vector<char>* present) {
   const StrengthSelection selection = selected_strengths(model, fos);
   // The strength reduction is a stage of no load whose factor is F itself: the yield functions
   // of the reduced strengths are violated at the state carried, and each step's LCP finds the
@@ -42,7 +43,7 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
   std::optional<Trial> last;
   const TryStep try_step = [&](double step) {
     const Model reduced = reduce_strength(model, selection, state.stage_factor + step);
-    const YieldEvaluator yield(reduced, points);
+    const YieldEvaluator yield(reduced, points, present);
     const StageContext ctx{reduced, points, k, reduction, yield, no_load, {}, 0.0, &timings};
     return solve_increment(ctx, state, step, options, tuning, solver, memory);
   };

@@ -1,6 +1,7 @@
 #include <bimrock/analysis/field_results.hpp>
 
 #include <bimrock/assembly/integration_points.hpp>
+#include <bimrock/model/initial_stress.hpp>
 
 namespace bimrock {
 
@@ -12,8 +13,9 @@ BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u,
   s.strain = s.d.tail<3>();
   if (plastic.index && plastic.index->block_points[block] >= 0)
     s.plastic = (*plastic.states)[plastic.index->block_points[block]].plastic;
-  s.stress = elasticity_matrix(model.block_materials[b.material], model.settings.plane) *
-             (s.strain - s.plastic);
+  s.stress = block_initial_stress(model, block) +
+             elasticity_matrix(model.block_materials[b.material], model.settings.plane) *
+                 (s.strain - s.plastic);
   return s;
 }
 
@@ -38,7 +40,9 @@ InterfaceState interface_state(const Model& model, int interface, const Eigen::V
       state[k].plastic =
           (*plastic.states)[plastic.index->interface_points[interface][k]].plastic.head<2>();
     const Eigen::Vector2d elastic = state[k].delta - state[k].plastic;
-    state[k].stress = {f.normal_stiffness * elastic(0), f.shear_stiffness * elastic(1)};
+    state[k].stress =
+        interface_initial_stress(model, f, p) +
+        Eigen::Vector2d(f.normal_stiffness * elastic(0), f.shear_stiffness * elastic(1));
   }
   return state;
 }

@@ -15,15 +15,16 @@ namespace bimrock {
 struct BlockState {
   Vec6 d;                  ///< [u0, v0, theta, eps_x, eps_y, gamma_xy]
   Eigen::Vector3d strain;  ///< [eps_x, eps_y, gamma_xy]
-  Eigen::Vector3d
-      stress;  ///< [sigma_x, sigma_y, tau_xy] = D_b (strain - plastic) [Pa], tension positive
+  /// [sigma_x, sigma_y, tau_xy] = initial + D_b (strain - plastic) [Pa], tension positive
+  Eigen::Vector3d stress;
   Eigen::Vector3d plastic = Eigen::Vector3d::Zero();  ///< plastic strain
 };
 
 struct InterfacePointState {
   Vec2 point;
-  Eigen::Vector2d delta;   ///< [delta_n, delta_s] [m]; delta_n > 0 opens
-  Eigen::Vector2d stress;  ///< [sigma_n, tau] = D_s (delta - plastic) [Pa]; sigma_n > 0 is tension
+  Eigen::Vector2d delta;  ///< [delta_n, delta_s] [m]; delta_n > 0 opens
+  /// [sigma_n, tau] = initial + D_s (delta - plastic) [Pa]; sigma_n > 0 is tension
+  Eigen::Vector2d stress;
   Eigen::Vector2d plastic = Eigen::Vector2d::Zero();  ///< plastic relative displacement [m]
 };
 

@@ -76,9 +76,9 @@ MemoryEstimate estimate_memory(const Model& model) {
                   10.5 * static_cast<double>(e.factor_nonzeros);
   e.peak_bytes = std::max(e.now_bytes, 0.0) + 8.0 * kMiB + e.solve_bytes;
   // A nonlinear run condenses K onto its plastic zone while the zone is at most
-  // ZoneTuning::condensed_zone_fraction of the model; S on a zone that large, taken as dense (its lower
-  // triangle, 8 bytes a number), bounds what that adds. Against measured peaks (the rock slope
-  // example with strength and a surcharge: 430, 3 195 and 12 907 blocks, 24.8, 287 and 5 093
+  // ZoneTuning::condensed_zone_fraction of the model; S on a zone that large, taken as dense (its
+  // lower triangle, 8 bytes a number), bounds what that adds. Against measured peaks (the rock
+  // slope example with strength and a surcharge: 430, 3 195 and 12 907 blocks, 24.8, 287 and 5 093
   // MiB) it is 16-40% over.
   if (!model.stages.empty()) {
     const double zone = 6.0 * ZoneTuning{}.condensed_zone_fraction * static_cast<double>(nb);

@@ -8,17 +8,18 @@
 #include <string>
 #include <utility>
 
+#include <bimrock/analysis/excavation.hpp>
 #include <bimrock/analysis/factor_of_safety_search.hpp>
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/increment.hpp>
 #include <bimrock/analysis/load_stepping.hpp>
+#include <bimrock/analysis/stage_structure.hpp>
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/assembly/global_system.hpp>
+#include <bimrock/assembly/initial_forces.hpp>
 #include <bimrock/assembly/kinematics.hpp>
 #include <bimrock/assembly/yield_values.hpp>
 #include <bimrock/solve/factor_memory.hpp>
-#include <bimrock/solve/increment_solver.hpp>
-#include <bimrock/solve/sparse_cholesky.hpp>
 
 namespace bimrock {
 namespace {
@@ -52,11 +53,11 @@ IncrementRecord record(const Model& model, const Trial& t, int stage, int increm
 // row of K's unknowns and its rate along x_ref.
 StageContext stage_context(const Model& model, const std::vector<YieldPoint>& points,
                            const SparseCholesky& k, const YieldEvaluator& yield, const Stage& stage,
-                           Timings& timings) {
+                           const Eigen::VectorXd& load, Timings& timings) {
   StageContext ctx{model, points, k, stage, yield, {}, {}, 0.0, &timings};
   {
     ScopedTimer t(timings, "stage loads");
-    ctx.x_ref = k.solve(assemble_loads(model, stage.loads));
+    ctx.x_ref = k.solve(load);
   }
   if (stage.control) {
     const Monitor& m = model.monitors[stage.control->monitor];
@@ -70,6 +71,18 @@ StageContext stage_context(const Model& model, const std::vector<YieldPoint>& po
                        {m.block});
   }
   return ctx;
+}
+
+// The stage's own loads on the blocks present; the first stage's less what the initial stress
+// carries (its loads are in place from the start: it applies only the residual).
+Eigen::VectorXd stage_loads(const Model& model, int stage, const std::vector<char>& present) {
+  Eigen::VectorXd p = assemble_loads(model, model.stages[static_cast<std::size_t>(stage)].loads);
+  if (stage == 0 && model.initial_stress)
+    p -= initial_internal_forces(model);
+  for (std::size_t b = 0; b < present.size(); ++b)
+    if (!present[b])
+      p.segment<6>(6 * static_cast<Eigen::Index>(b)).setZero();
+  return p;
 }
 
 // Neither carried nor proven to fail: near a limit load the LCP is nearly singular. The analysis
@@ -87,13 +100,14 @@ Stop undecided_stop(int stage_index, const Stage& stage, double carried) {
 }
 
 // The result, with where the LCP phase's time went and what condensing cost.
-PlasticResult with_statistics(PlasticResult result, const SparseCholesky& k,
-                              const IncrementSolver& solver, const IncrementMemory& memory) {
-  const ZoneStatistics zones = solver.zone_statistics();
+PlasticResult with_statistics(PlasticResult result, const StageStructure& structure,
+                              const IncrementMemory& memory) {
+  const ZoneStatistics zones = structure.zone_statistics();
   result.timings.add("(LCP: tangent factorizations)", zones.tangent.factorize_seconds);
   result.timings.add("(LCP: tangent solves)", zones.tangent.solve_seconds);
-  result.timings.add("(solves with K)", k.work().solve_seconds);
+  result.timings.add("(solves with K)", structure.solve_seconds());
   result.timings.add("(solves with S, K condensed)", zones.condensed.solve_seconds);
+  result.stiffness_factorizations = structure.factorizations();
   result.condensations = zones.condensations;
   result.reserve_switches = zones.reserve_switches;
   result.regions = zones.regions;
@@ -104,19 +118,76 @@ PlasticResult with_statistics(PlasticResult result, const SparseCholesky& k,
   return result;
 }
 
+// What the initial stress balances: the first stage's loads less its internal forces, and the
+// points where it violates a strength. Throws ModelError listing those points unless the case
+// lets them yield.
+InitialStressCheck check_initial_stress(const Model& model, const std::vector<YieldPoint>& points,
+                                        const PlasticOptions& options) {
+  InitialStressCheck check;
+  const Eigen::VectorXd loads = assemble_loads(model, model.stages.front().loads);
+  const Eigen::VectorXd internal = initial_internal_forces(model);
+  check.residual = (loads - internal).cwiseAbs().maxCoeff();
+  const double scale = std::max(loads.cwiseAbs().maxCoeff(), internal.cwiseAbs().maxCoeff());
+  check.relative_residual = scale > 0.0 ? check.residual / scale : 0.0;
+  const std::vector<char> present = blocks_present(model, -1);
+  const YieldEvaluator yield(model, points, &present);
+  YieldValues f;
+  double stress_scale = 0.0;
+  yield.evaluate(std::vector<PlasticState>(points.size()), Eigen::VectorXd::Zero(model.n_dofs()), f,
+                 &stress_scale);
+  const double tol = options.yield_tolerance * std::max(stress_scale, 1.0);
+  std::vector<int> blocks;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    if (f.largest(p) <= tol)
+      continue;
+    ++check.violated_points;
+    blocks.push_back(points[p].block_i);
+  }
+  if (check.violated_points > 0 && !model.initial_stress->allow_yield) {
+    std::sort(blocks.begin(), blocks.end());
+    blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
+    throw ModelError(std::to_string(check.violated_points) +
+                         " yield points violate their strength under the initial stress, at " +
+                         name_blocks(model, blocks) +
+                         ": give a field within the strengths, or let them yield in the first "
+                         "stage (initial_stress.allow_yield: true)",
+                     blocks);
+  }
+  return check;
+}
+
 // The stages of the model from the unloaded state, into `result` (its points given): every
 // increment carried is recorded; the first collapse or undecided step ends them. `at_stage_end`
-// (if any) is called with each stage carried.
-void run_stages(const Model& model, const SparseCholesky& k, const PlasticOptions& options,
-                const CandidateTuning& tuning, IncrementSolver& solver, IncrementMemory& memory,
-                const IncrementCallback& on_increment, PlasticResult& result,
-                const std::function<void(int)>& at_stage_end = {}) {
+// (if any) is called with each stage carried. A stage that excavates stands on K of the blocks
+// left and releases the forces of the blocks removed (analysis/excavation.hpp).
+void run_stages(const Model& model, StageStructure& structure, const YieldPointIndex& index,
+                const PlasticOptions& options, const CandidateTuning& tuning,
+                IncrementMemory& memory, const IncrementCallback& on_increment,
+                PlasticResult& result, const std::function<void(int)>& at_stage_end = {}) {
   result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
   result.state.points.assign(result.points.size(), PlasticState{});
-  const YieldEvaluator yield(model, result.points);
+  structure.stand_on(blocks_present(model, -1));
+  Eigen::VectorXd unreleased = Eigen::VectorXd::Zero(model.n_dofs());
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
-    const StageContext ctx = stage_context(model, result.points, k, yield, stage, result.timings);
+    if (!stage.excavated.empty()) {
+      const std::vector<char> present = blocks_present(model, st);
+      unreleased += excavation_forces(model, present, stage.excavated, result.state.u,
+                                      {&index, &result.state.points});
+      const YieldEvaluator gone(model, result.points, &present);
+      YieldValues f;
+      gone.evaluate(result.state.points, result.state.u, f);
+      for (std::size_t p = 0; p < result.points.size(); ++p)
+        if (f.largest(p) == kAbsentPoint)
+          result.state.points[p] = PlasticState{};
+      structure.stand_on(present);
+    }
+    Eigen::VectorXd load = stage_loads(model, st, structure.present());
+    load += stage.release * unreleased;
+    unreleased *= 1.0 - stage.release;
+    const YieldEvaluator yield(model, result.points, &structure.present());
+    const StageContext ctx =
+        stage_context(model, result.points, structure.k(), yield, stage, load, result.timings);
     const double step = (stage.control ? stage.control->displacement : 1.0) / stage.increments;
     result.state.stage_factor = 0.0;
     std::optional<Trial> last;  // the last carried trial of the stage
@@ -135,7 +206,7 @@ void run_stages(const Model& model, const SparseCholesky& k, const PlasticOption
       part_start = std::chrono::steady_clock::now();
     };
     const TryStep try_step = [&](double s) {
-      return solve_increment(ctx, result.state, s, options, tuning, solver, memory);
+      return solve_increment(ctx, result.state, s, options, tuning, structure.solver(), memory);
     };
     const SteppingOptions stepping{options.bracket_tolerance, options.max_bisections,
                                    stage.control.has_value(), false};
@@ -163,10 +234,10 @@ void run_stages(const Model& model, const SparseCholesky& k, const PlasticOption
 }
 
 // F < 1, for stages that collapse up to `fos_stage` (result.collapse): each trial runs them
-// again from the start with the strengths raised, on the analysis' K.
-FactorOfSafety factor_below_one(const Model& model, int fos_stage, const SparseCholesky& k,
-                                const PlasticOptions& options, const CandidateTuning& tuning,
-                                IncrementSolver& solver, IncrementMemory& memory,
+// again from the start with the strengths raised.
+FactorOfSafety factor_below_one(const Model& model, int fos_stage, StageStructure& structure,
+                                const YieldPointIndex& index, const PlasticOptions& options,
+                                const CandidateTuning& tuning, IncrementMemory& memory,
                                 PlasticResult& result, const FactorTrialCallback& on_trial) {
   Model until = model;
   until.stages.resize(static_cast<std::size_t>(fos_stage) + 1);
@@ -175,7 +246,7 @@ FactorOfSafety factor_below_one(const Model& model, int fos_stage, const SparseC
     const Model stronger = reduce_strength(until, selection, factor);
     PlasticResult trial;
     trial.points = result.points;
-    run_stages(stronger, k, options, tuning, solver, memory, {}, trial);
+    run_stages(stronger, structure, index, options, tuning, memory, {}, trial);
     for (const auto& [phase, seconds] : trial.timings.phases)
       result.timings.add(phase, seconds);
     StagesOutcome o{trial.state, 0.0, trial.collapse, trial.stopped.has_value()};
@@ -201,26 +272,18 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     ScopedTimer t(result.timings, "check supports");
     check_supports(model);
   }
-  // K, assembled and factorized once for the whole analysis (its lower triangle is kept: the
-  // reduced tangent is K minus the plastic part).
-  SparseCholesky k;
-  SparseMatrix lower;
-  {
-    {
-      ScopedTimer t(result.timings, "assemble");
-      lower = assemble_stiffness_lower(model);
-    }
-    ScopedTimer f(result.timings, "factorize");
-    k.analyze(lower, 6);
-    if (!k.factorize(lower))
-      report_singular_stiffness(model, k.failed_column());
-  }
-  result.points = make_yield_points(model);
-  IncrementSolver solver(model, k, lower, tuning.solver);
+  YieldPointIndex index;
+  result.points = make_yield_points(model, &index);
+  if (model.initial_stress && !model.stages.empty())
+    result.initial_stress = check_initial_stress(model, result.points, options);
+  // K, assembled and factorized once for the whole analysis, and again after each stage that
+  // excavates (its lower triangle is kept: the reduced tangent is K minus the plastic part).
+  StageStructure structure(model, tuning.solver, result.timings);
+  structure.stand_on(blocks_present(model, -1));
   IncrementMemory memory;
   if (!options.factor_of_safety) {
-    run_stages(model, k, options, tuning.candidates, solver, memory, on_increment, result);
-    return with_statistics(std::move(result), k, solver, memory);
+    run_stages(model, structure, index, options, tuning.candidates, memory, on_increment, result);
+    return with_statistics(std::move(result), structure, memory);
   }
   // The factor of safety after its stage (by default the last), from the state reached there;
   // it is a part of the phases' times too: its own phase says what F costs over the stages.
@@ -230,19 +293,19 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     if (stage != fos_stage)
       return;
     ScopedTimer t(result.timings, "(factor of safety)");
-    result.factor_of_safety =
-        find_factor_of_safety(model, result.points, k, result.state, fos, options,
-                              tuning.candidates, solver, memory, result.timings, on_factor_trial);
+    result.factor_of_safety = find_factor_of_safety(
+        model, result.points, structure.k(), result.state, fos, options, tuning.candidates,
+        structure.solver(), memory, result.timings, on_factor_trial, &structure.present());
     result.factor_of_safety->stage = fos_stage;
   };
-  run_stages(model, k, options, tuning.candidates, solver, memory, on_increment, result,
+  run_stages(model, structure, index, options, tuning.candidates, memory, on_increment, result,
              factor_of_safety_after);
   if (result.collapse && result.collapse->stage <= fos_stage) {
     ScopedTimer t(result.timings, "(factor of safety)");
-    result.factor_of_safety = factor_below_one(model, fos_stage, k, options, tuning.candidates,
-                                               solver, memory, result, on_factor_trial);
+    result.factor_of_safety = factor_below_one(model, fos_stage, structure, index, options,
+                                               tuning.candidates, memory, result, on_factor_trial);
   }
-  return with_statistics(std::move(result), k, solver, memory);
+  return with_statistics(std::move(result), structure, memory);
 }
 
 }  // namespace bimrock

@@ -40,6 +40,13 @@ struct Stop {
   std::string reason;
 };
 
+/// What the initial stress (model/initial_stress.hpp) balances before the first stage.
+struct InitialStressCheck {
+  double residual = 0.0;           ///< the largest entry of P_first_stage - f_internal [N]
+  double relative_residual = 0.0;  ///< that over the largest entry of either
+  int violated_points = 0;         ///< yield points outside their strength (allowed to yield)
+};
+
 struct PlasticResult {
   std::vector<YieldPoint> points;
   AnalysisState state;
@@ -48,7 +55,9 @@ struct PlasticResult {
   std::optional<Stop> stopped;
   /// With PlasticOptions::factor_of_safety, after stages that carried: F by strength reduction.
   std::optional<FactorOfSafety> factor_of_safety;
+  std::optional<InitialStressCheck> initial_stress;
   Timings timings;
+  int stiffness_factorizations = 0;  ///< of K for the blocks present: 1 + stages that excavate
   /// Times K was condensed onto a zone (factorized again in another order; the last may be
   /// "no condensation"), times a zone outgrown was replaced by a reserve zone of the same
   /// factor, and the blocks of the last zone (stiffness_zones.hpp).

@@ -85,6 +85,17 @@ void print_increment(const Model& model, const IncrementRecord& r, double elapse
 void print_plastic_summary(const Model& model, const PlasticResult& result,
                            const ElasticSolution& fields, const std::filesystem::path& out) {
   print_model(model);
+  if (result.initial_stress) {
+    const InitialStressCheck& i = *result.initial_stress;
+    fmt::print(
+        "initial stress: the first stage's loads less its internal forces: largest {:.3g} N "
+        "({:.2g} of the largest force){}\n",
+        i.residual, i.relative_residual,
+        i.violated_points > 0
+            ? fmt::format("; {} points outside their strength yield in the first stage",
+                          i.violated_points)
+            : std::string());
+  }
   print_monitors(model, fields);
   if (result.collapse) {
     const Collapse& c = *result.collapse;

@@ -87,16 +87,27 @@ class LowerAssembler {
 }  // namespace
 
 SparseMatrix assemble_stiffness_lower(const Model& model) {
+  return assemble_stiffness_lower(model, std::vector<char>(model.blocks.size(), 1));
+}
+
+SparseMatrix assemble_stiffness_lower(const Model& model, const std::vector<char>& present) {
   SparseMatrix lower;
   LowerAssembler k(model, lower);
   const double t = model.settings.thickness;
+  const auto here = [&](int b) { return present[static_cast<std::size_t>(b)] != 0; };
   for (int b = 0; b < model.n_blocks(); ++b) {
     const Block& block = model.blocks[b];
-    const Eigen::Matrix3d d_b =
-        elasticity_matrix(model.block_materials[block.material], model.settings.plane);
-    k.add<6>(block_stiffness(block, d_b, t), {b});
+    const BlockMaterial& material = model.block_materials[block.material];
+    if (!here(b)) {
+      // Any positive diagonal decouples the unknowns; t E keeps it of K's order.
+      k.add<6>(Mat6(Mat6::Identity() * t * material.young), {b});
+      continue;
+    }
+    k.add<6>(block_stiffness(block, elasticity_matrix(material, model.settings.plane), t), {b});
   }
   for (const Interface& f : model.interfaces) {
+    if (!here(f.block_i) || (!f.is_support() && !here(f.block_j)))
+      continue;
     const Vec2& ci = model.blocks[f.block_i].centroid;
     if (f.is_support()) {
       k.add<6>(support_stiffness(f, ci, t), {f.block_i});

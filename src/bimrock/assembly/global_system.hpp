@@ -2,6 +2,7 @@
 /// @file Scattering local blocks into the global stiffness K and load vector P (eq. 14).
 /// Global unknowns: U = [d_0; d_1; ...], block k owns rows 6k .. 6k+5.
 #include <cstdint>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -15,6 +16,12 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, std::int64_t>;
 
 /// The lower triangle of K (K is symmetric; CHOLMOD reads one triangle).
 SparseMatrix assemble_stiffness_lower(const Model& model);
+
+/// The same of the structure that the blocks flagged in `present` form (after an excavation):
+/// the same pattern (so a factor's analysis carries over), with the stiffness of an absent
+/// block and of every interface touching one left out, and an absent block's six unknowns
+/// held by a decoupled diagonal (its displacement stays what it was).
+SparseMatrix assemble_stiffness_lower(const Model& model, const std::vector<char>& present);
 
 /// The whole symmetric K, for checks and small problems.
 SparseMatrix full_from_lower(const SparseMatrix& lower);

@@ -40,7 +40,8 @@ Eigen::VectorXd local_strain(const Model& model, const YieldPoint& p, const Eige
 Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const PlasticState& s,
                              const Eigen::VectorXd& u) {
   const Eigen::VectorXd strain = local_strain(model, p, u);
-  return local_stiffness(model, p) * (strain - s.plastic.head(strain.size()));
+  return p.initial.head(strain.size()) +
+         local_stiffness(model, p) * (strain - s.plastic.head(strain.size()));
 }
 
 ModeKind mode_kind(const YieldPoint& p, int mode) {

@@ -27,7 +27,8 @@ Eigen::MatrixXd local_stiffness(const Model& model, const YieldPoint& p);
 /// The local strain (delta or eps) of the point for the unknowns u.
 Eigen::VectorXd local_strain(const Model& model, const YieldPoint& p, const Eigen::VectorXd& u);
 
-/// The stress (R = [sigma_n, tau] or [sigma_x, sigma_y, tau_xy]) for the unknowns u.
+/// The stress (R = [sigma_n, tau] or [sigma_x, sigma_y, tau_xy]) for the unknowns u: the
+/// initial stress plus the elastic part's.
 Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const PlasticState& s,
                              const Eigen::VectorXd& u);
 

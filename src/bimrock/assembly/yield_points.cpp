@@ -4,6 +4,7 @@
 #include <tuple>
 
 #include <bimrock/assembly/integration_points.hpp>
+#include <bimrock/model/initial_stress.hpp>
 
 namespace bimrock {
 
@@ -36,8 +37,10 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
       seen[key] = points.size();
       if (index)
         index->interface_points[k][end] = static_cast<int>(points.size());
-      points.push_back({YieldPoint::Kind::interface, k, f.block_i, f.block_j, ip.point, f.normal,
-                        t * ip.weight, f.joint_material});
+      YieldPoint& p =
+          points.emplace_back(YieldPoint{YieldPoint::Kind::interface, k, f.block_i, f.block_j,
+                                         ip.point, f.normal, t * ip.weight, f.joint_material});
+      p.initial.head<2>() = interface_initial_stress(model, f, ip.point);
     }
   }
   for (int b = 0; b < model.n_blocks(); ++b) {
@@ -46,8 +49,10 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
       continue;
     if (index)
       index->block_points[b] = static_cast<int>(points.size());
-    points.push_back({YieldPoint::Kind::block, b, b, kGround, block.centroid, Vec2::Zero(),
-                      t * block.area, block.material});
+    YieldPoint& p =
+        points.emplace_back(YieldPoint{YieldPoint::Kind::block, b, b, kGround, block.centroid,
+                                       Vec2::Zero(), t * block.area, block.material});
+    p.initial = block_initial_stress(model, b);
   }
   return points;
 }

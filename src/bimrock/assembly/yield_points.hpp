@@ -6,6 +6,8 @@
 #include <array>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include <bimrock/model/model.hpp>
 
 namespace bimrock {
@@ -20,6 +22,9 @@ struct YieldPoint {
   Vec2 normal;          ///< interfaces only, from i into j
   double weight = 0.0;  ///< t * length share [m^2] for interfaces, t * area [m^3] for blocks
   int material = 0;     ///< joint or block material index
+  /// The stress before any displacement (model/initial_stress.hpp): [sigma_n, tau, 0] for an
+  /// interface, [sigma_x, sigma_y, tau_xy] for a block [Pa].
+  Eigen::Vector3d initial = Eigen::Vector3d::Zero();
 
   [[nodiscard]] bool is_interface() const { return kind == Kind::interface; }
 };

@@ -7,12 +7,18 @@
 
 namespace bimrock {
 
-YieldEvaluator::YieldEvaluator(const Model& model, const std::vector<YieldPoint>& points)
-    : model_(model), points_(points) {
+YieldEvaluator::YieldEvaluator(const Model& model, const std::vector<YieldPoint>& points,
+                               const std::vector<char>* present)
+    : model_(model), points_(points), absent_(points.size(), 0) {
   first_.reserve(points.size() + 1);
   first_.push_back(0);
-  for (const YieldPoint& p : points)
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const YieldPoint& p = points[k];
     first_.push_back(first_.back() + n_modes(model, p));
+    if (present)
+      absent_[k] = !(*present)[static_cast<std::size_t>(p.block_i)] ||
+                   (p.block_j != kGround && !(*present)[static_cast<std::size_t>(p.block_j)]);
+  }
   block_laws_.resize(model.block_materials.size());
   for (std::size_t m = 0; m < model.block_materials.size(); ++m) {
     const BlockMaterial& material = model.block_materials[m];
@@ -32,6 +38,10 @@ void YieldEvaluator::evaluate(const std::vector<PlasticState>& states, const Eig
     const YieldPoint& point = points_[p];
     const PlasticState& s = states[p];
     const Eigen::Index at = first_[p];
+    if (absent_[p]) {
+      out.f.segment(at, first_[p + 1] - at).setConstant(kAbsentPoint);
+      continue;
+    }
     const Vec2& ci = model_.blocks[point.block_i].centroid;
     const Vec6 di = u.segment<6>(6 * point.block_i);
     if (point.is_interface()) {
@@ -47,8 +57,8 @@ void YieldEvaluator::evaluate(const std::vector<PlasticState>& states, const Eig
             d;
       }
       const Interface& f = model_.interfaces[point.owner];
-      const double sigma_n = f.normal_stiffness * (delta(0) - s.plastic(0));
-      const double tau = f.shear_stiffness * (delta(1) - s.plastic(1));
+      const double sigma_n = point.initial(0) + f.normal_stiffness * (delta(0) - s.plastic(0));
+      const double tau = point.initial(1) + f.shear_stiffness * (delta(1) - s.plastic(1));
       const JointStrength& law = *model_.joint_materials[point.material].strength;
       out.f.segment<3>(at) = joint_values(law, s, sigma_n, tau);
       if (scale)
@@ -57,7 +67,7 @@ void YieldEvaluator::evaluate(const std::vector<PlasticState>& states, const Eig
                             std::abs(law.tensile.value(s.max_gap))});
     } else {
       const BlockLaw& law = block_laws_[static_cast<std::size_t>(point.material)];
-      const Eigen::Vector3d sigma = law.d * (di.tail<3>() - s.plastic);
+      const Eigen::Vector3d sigma = point.initial + law.d * (di.tail<3>() - s.plastic);
       out.f.segment(at, law.a.rows()) =
           law.a * sigma - Eigen::VectorXd::Constant(law.a.rows(), law.strength);
       if (scale)

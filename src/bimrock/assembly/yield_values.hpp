@@ -26,11 +26,19 @@ struct YieldValues {
   [[nodiscard]] double largest(std::size_t p) const { return of(p).maxCoeff(); }
 };
 
+/// The value of every yield function of a point that is absent (its block or one of its
+/// interface's blocks excavated): far below any tolerance, so it is never violated nor a
+/// candidate.
+inline constexpr double kAbsentPoint = -1e300;
+
 /// Evaluates the yield functions of a fixed set of points (what depends only on the materials,
 /// such as the planes of a block's criterion, is worked out once).
 class YieldEvaluator {
  public:
-  YieldEvaluator(const Model& model, const std::vector<YieldPoint>& points);
+  /// @param present if given, the blocks present (per block): points of absent ones get
+  ///   kAbsentPoint
+  YieldEvaluator(const Model& model, const std::vector<YieldPoint>& points,
+                 const std::vector<char>* present = nullptr);
 
   /// f at the unknowns u, with each point's plastic state. `scale`, if given, is raised to the
   /// largest stress component and the largest strength (c, sigma_t, or a block's c cos(phi))
@@ -48,6 +56,7 @@ class YieldEvaluator {
   const std::vector<YieldPoint>& points_;
   std::vector<Eigen::Index> first_;
   std::vector<BlockLaw> block_laws_;  // per block material (empty where it has no strength)
+  std::vector<char> absent_;          // per point
 };
 
 }  // namespace bimrock

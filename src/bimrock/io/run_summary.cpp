@@ -193,10 +193,16 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
     } else {
       j["collapse"] = nullptr;
     }
-    // K once, again in another order for each zone or region it was condensed onto; the
-    // reduced tangents of the LCPs besides. The strengths of a factor of safety change none.
-    j["factorizations"] = {{"stiffness", 1 + plastic->condensations + plastic->regions},
+    // K once (and again after each stage that excavates), again in another order for each zone
+    // or region it was condensed onto; the reduced tangents of the LCPs besides. The strengths
+    // of a factor of safety change none.
+    j["factorizations"] = {{"stiffness", plastic->stiffness_factorizations +
+                                             plastic->condensations + plastic->regions},
                            {"tangents", plastic->tangent_factorizations}};
+    if (plastic->initial_stress)
+      j["initial_stress"] = {{"residual_N", plastic->initial_stress->residual},
+                             {"relative_residual", plastic->initial_stress->relative_residual},
+                             {"violated_points", plastic->initial_stress->violated_points}};
     if (plastic->factor_of_safety)
       j["factor_of_safety"] =
           factor_of_safety_json(model, plastic->points, *plastic->factor_of_safety);

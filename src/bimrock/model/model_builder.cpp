@@ -490,8 +490,11 @@ class Builder {
              limit_message(increments, spec_.limits.increments, "increments",
                            "load increments (over all stages)", "give fewer increments"));
       }
-      Stage stage{st.name, resolve_loads(st.loads, st.source.item), st.increments, std::nullopt,
-                  st.source};
+      Stage stage;
+      stage.name = st.name;
+      stage.loads = resolve_loads(st.loads, st.source.item);
+      stage.increments = st.increments;
+      stage.source = st.source;
       if (st.increments < 1)
         fail(st.source, "increments must be at least 1");
       if (st.control) {

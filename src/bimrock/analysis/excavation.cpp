@@ -1,0 +1,79 @@
+#include <bimrock/analysis/excavation.hpp>
+
+#include <bimrock/assembly/integration_points.hpp>
+#include <bimrock/model/initial_stress.hpp>
+
+namespace bimrock {
+namespace {
+
+// t integral B^T R ds of interface f, both blocks' 12 unknowns (6 for a support).
+Eigen::Matrix<double, 12, 1> interface_force(const Model& model, int index,
+                                             const Eigen::VectorXd& u,
+                                             const PlasticParts& plastic) {
+  const Interface& f = model.interfaces[index];
+  const double t = model.settings.thickness;
+  const Vec2& ci = model.blocks[f.block_i].centroid;
+  const Vec2& cj = f.is_support() ? ci : model.blocks[f.block_j].centroid;
+  const auto b_at = [&](const Vec2& p) {
+    Mat2x12 b = interface_B(f.normal, ci, cj, p);
+    if (f.is_support())
+      b.rightCols<6>().setZero();
+    return b;
+  };
+  Eigen::Matrix<double, 12, 1> force = Eigen::Matrix<double, 12, 1>::Zero();
+  for (const IntegrationPoint& ip : integration_points(f.segment, Integration::gauss))
+    force +=
+        t * ip.weight * b_at(ip.point).transpose() * interface_initial_stress(model, f, ip.point);
+  const InterfaceState state = interface_state(model, index, u, plastic);
+  const auto rule = integration_points(f.segment, f.integration);
+  for (std::size_t k = 0; k < rule.size(); ++k) {
+    const Eigen::Vector2d elastic =
+        state[k].stress - interface_initial_stress(model, f, state[k].point);
+    force += t * rule[k].weight * b_at(state[k].point).transpose() * elastic;
+  }
+  return force;
+}
+
+}  // namespace
+
+Eigen::VectorXd excavation_forces(const Model& model, const std::vector<char>& present,
+                                  const std::vector<int>& excavated, const Eigen::VectorXd& u,
+                                  const PlasticParts& plastic) {
+  std::vector<char> gone(model.blocks.size(), 0);
+  for (int b : excavated)
+    gone[static_cast<std::size_t>(b)] = 1;
+  Eigen::VectorXd forces = Eigen::VectorXd::Zero(model.n_dofs());
+  for (int k = 0; k < model.n_interfaces(); ++k) {
+    const Interface& f = model.interfaces[k];
+    if (f.is_support())
+      continue;
+    const auto i = static_cast<std::size_t>(f.block_i);
+    const auto j = static_cast<std::size_t>(f.block_j);
+    const bool i_stays = present[i] != 0 && gone[j] != 0;
+    const bool j_stays = present[j] != 0 && gone[i] != 0;
+    if (!i_stays && !j_stays)
+      continue;
+    const Eigen::Matrix<double, 12, 1> force = interface_force(model, k, u, plastic);
+    if (i_stays)
+      forces.segment<6>(6 * f.block_i) += force.head<6>();
+    else
+      forces.segment<6>(6 * f.block_j) += force.tail<6>();
+  }
+  return forces;
+}
+
+std::vector<char> blocks_present(const Model& model, int stage) {
+  std::vector<char> present(model.blocks.size(), 1);
+  for (const Stage& s : model.stages)
+    for (int b : s.installed)
+      present[static_cast<std::size_t>(b)] = 0;
+  for (int k = 0; k <= stage; ++k) {
+    for (int b : model.stages[static_cast<std::size_t>(k)].excavated)
+      present[static_cast<std::size_t>(b)] = 0;
+    for (int b : model.stages[static_cast<std::size_t>(k)].installed)
+      present[static_cast<std::size_t>(b)] = 1;
+  }
+  return present;
+}
+
+}  // namespace bimrock

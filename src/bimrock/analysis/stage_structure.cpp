@@ -1,0 +1,65 @@
+#include <bimrock/analysis/stage_structure.hpp>
+
+#include <bimrock/analysis/support_check.hpp>
+
+namespace bimrock {
+namespace {
+
+void add(CholeskyWork& sum, const CholeskyWork& w) {
+  sum.factorizations += w.factorizations;
+  sum.solved_columns += w.solved_columns;
+  sum.factorize_seconds += w.factorize_seconds;
+  sum.solve_seconds += w.solve_seconds;
+}
+
+}  // namespace
+
+StageStructure::StageStructure(const Model& model, const SolverTuning& tuning, Timings& timings)
+    : model_(model), tuning_(tuning), timings_(timings) {}
+
+void StageStructure::stand_on(const std::vector<char>& present) {
+  if (k_ && present == present_)
+    return;
+  retire();
+  solver_.reset();
+  {
+    ScopedTimer t(timings_, "assemble");
+    lower_ = assemble_stiffness_lower(model_, present);
+  }
+  ScopedTimer f(timings_, "factorize");
+  k_ = std::make_unique<SparseCholesky>();
+  k_->analyze(lower_, 6);
+  if (!k_->factorize(lower_))
+    report_singular_stiffness(model_, k_->failed_column());
+  present_ = present;
+  solver_ = std::make_unique<IncrementSolver>(model_, *k_, lower_, tuning_);
+  ++factorizations_;
+}
+
+void StageStructure::retire() {
+  if (!solver_)
+    return;
+  const ZoneStatistics z = solver_->zone_statistics();
+  retired_.condensations += z.condensations;
+  retired_.reserve_switches += z.reserve_switches;
+  retired_.regions += z.regions;
+  add(retired_.tangent, z.tangent);
+  add(retired_.condensed, z.condensed);
+  retired_solve_seconds_ += k_->work().solve_seconds;
+}
+
+ZoneStatistics StageStructure::zone_statistics() const {
+  ZoneStatistics z = solver_->zone_statistics();
+  z.condensations += retired_.condensations;
+  z.reserve_switches += retired_.reserve_switches;
+  z.regions += retired_.regions;
+  add(z.tangent, retired_.tangent);
+  add(z.condensed, retired_.condensed);
+  return z;
+}
+
+double StageStructure::solve_seconds() const {
+  return retired_solve_seconds_ + k_->work().solve_seconds;
+}
+
+}  // namespace bimrock
