@@ -115,10 +115,10 @@ struct DisplacementControlSpec {
 struct BlockSelector {
   enum class Kind { region, box, material, list };
   Kind kind = Kind::region;
-  Polygon region;                ///< kind region [m]
-  BBox box;                      ///< kind box [m]
-  std::string material;          ///< kind material: a block material's name
-  std::vector<int> blocks;       ///< kind list: indices in the model's order of blocks
+  Polygon region;           ///< kind region [m]
+  BBox box;                 ///< kind box [m]
+  std::string material;     ///< kind material: a block material's name
+  std::vector<int> blocks;  ///< kind list: indices in the model's order of blocks
   SourceRef source;
 };
 
@@ -132,10 +132,11 @@ struct StageSpec {
   LoadsSpec loads;
   int increments = 1;
   std::optional<DisplacementControlSpec> control;
-  std::optional<BlockSelector> excavate;
-  std::optional<BlockSelector> install;
-  double release = 1.0;  ///< fraction of the unreleased excavation forces released, (0, 1]
   SourceRef source;
+  // After `source`, with initializers: positional initializations of the fields above still hold.
+  std::optional<BlockSelector> excavate{};
+  std::optional<BlockSelector> install{};
+  double release = 1.0;  ///< fraction of the unreleased excavation forces released, (0, 1]
 };
 
 /// The stress in the rock before the first stage (docs/case-file.md, "Initial stress"): a

@@ -81,10 +81,11 @@ struct Stage {
   Loads loads;  ///< added to the loads of earlier stages, in `increments` equal steps
   int increments = 1;
   std::optional<DisplacementControl> control;
-  std::vector<int> excavated;  ///< blocks removed at the stage's start (present until then)
-  std::vector<int> installed;  ///< blocks added at the stage's start (absent until then)
-  double release = 1.0;        ///< fraction of the unreleased excavation forces released here
   SourceRef source;
+  // After `source`, with initializers: positional initializations of the fields above still hold.
+  std::vector<int> excavated{};  ///< blocks removed at the stage's start (present until then)
+  std::vector<int> installed{};  ///< blocks added at the stage's start (absent until then)
+  double release = 1.0;          ///< fraction of the unreleased excavation forces released here
 };
 
 struct Monitor {
@@ -106,7 +107,7 @@ struct Model {
   std::vector<Stage> stages;           ///< of a nonlinear analysis
   std::vector<Monitor> monitors;
   std::optional<InitialStressSpec> initial_stress;  ///< model/initial_stress.hpp
-  double tolerance = 0.0;  ///< length tolerance, see model_tolerance()
+  double tolerance = 0.0;                           ///< length tolerance, see model_tolerance()
 
   [[nodiscard]] int n_blocks() const { return static_cast<int>(blocks.size()); }
   [[nodiscard]] int n_interfaces() const { return static_cast<int>(interfaces.size()); }
