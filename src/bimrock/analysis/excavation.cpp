@@ -62,18 +62,4 @@ Eigen::VectorXd excavation_forces(const Model& model, const std::vector<char>& p
   return forces;
 }
 
-std::vector<char> blocks_present(const Model& model, int stage) {
-  std::vector<char> present(model.blocks.size(), 1);
-  for (const Stage& s : model.stages)
-    for (int b : s.installed)
-      present[static_cast<std::size_t>(b)] = 0;
-  for (int k = 0; k <= stage; ++k) {
-    for (int b : model.stages[static_cast<std::size_t>(k)].excavated)
-      present[static_cast<std::size_t>(b)] = 0;
-    for (int b : model.stages[static_cast<std::size_t>(k)].installed)
-      present[static_cast<std::size_t>(b)] = 1;
-  }
-  return present;
-}
-
 }  // namespace bimrock

@@ -10,6 +10,7 @@
 
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/model/model.hpp>
+#include <bimrock/model/stage_blocks.hpp>  // blocks_present
 
 namespace bimrock {
 
@@ -21,8 +22,5 @@ namespace bimrock {
 Eigen::VectorXd excavation_forces(const Model& model, const std::vector<char>& present,
                                   const std::vector<int>& excavated, const Eigen::VectorXd& u,
                                   const PlasticParts& plastic);
-
-/// The blocks present during stage `stage` (after its own excavation); -1: before the first.
-std::vector<char> blocks_present(const Model& model, int stage);
 
 }  // namespace bimrock

@@ -1,11 +1,13 @@
 #include <bimrock/geometry/domain.hpp>
 
-#include <cmath>
+#include <string>
+#include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
 #include <bimrock/geometry/geometry_error.hpp>
+#include <bimrock/geometry/outline.hpp>
 
 namespace bimrock {
 namespace {
@@ -29,58 +31,6 @@ std::vector<K::Point_2> points(const Polygon& p) {
   return out;
 }
 
-std::string vertex_name(std::size_t k) {
-  return "vertex " + std::to_string(k + 1);
-}
-
-// Two edges of one polygon may only meet where they share a vertex, and adjacent edges must not
-// fold back onto each other. O(n^2) with a box test first: outlines have few vertices.
-void check_simple(const Polygon& p, const std::string& item) {
-  const std::size_t n = p.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const K::Segment_2 a = edge(p, i);
-    const K::Segment_2 b = edge(p, (i + 1) % n);  // adjacent: shares vertex i+1
-    if (CGAL::collinear(a.source(), a.target(), b.target()) &&
-        (b.target() - b.source()) * (a.source() - a.target()) > 0)
-      throw GeometryError(item, "the outline folds back on itself at " + vertex_name((i + 1) % n));
-    const CGAL::Bbox_2 box_a = a.bbox();
-    for (std::size_t j = i + 2; j < n; ++j) {
-      if (i == 0 && j == n - 1)
-        continue;  // adjacent through vertex 0
-      const K::Segment_2 c = edge(p, j);
-      if (!CGAL::do_overlap(box_a, c.bbox()))
-        continue;
-      if (CGAL::do_intersect(a, c))
-        throw GeometryError(item, "the outline intersects itself: edges " + std::to_string(i + 1) +
-                                      " and " + std::to_string(j + 1) + " cross or touch");
-    }
-  }
-}
-
-void check_polygon(const Polygon& p, const std::string& item) {
-  const std::size_t n = p.size();
-  if (n < 3)
-    throw GeometryError(item, "a polygon needs at least 3 vertices");
-  for (std::size_t k = 0; k < n; ++k) {
-    if (!std::isfinite(p.vertices[k].x()) || !std::isfinite(p.vertices[k].y()))
-      throw GeometryError(item, vertex_name(k) + " is not a finite number");
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    if (p.vertices[k] == p.vertices[(k + 1) % n])
-      throw GeometryError(item, vertex_name((k + 1) % n) + " repeats the vertex before it");
-  }
-  check_simple(p, item);
-  const std::vector<K::Point_2> pts = points(p);
-  switch (CGAL::orientation_2(pts.begin(), pts.end(), K())) {
-    case CGAL::COLLINEAR:
-      throw GeometryError(item, "the polygon has zero area");
-    case CGAL::CLOCKWISE:
-      throw GeometryError(item, "the vertices are clockwise; list them counter-clockwise");
-    default:
-      break;
-  }
-}
-
 bool edges_meet(const Polygon& a, const Polygon& b) {
   for (std::size_t i = 0; i < a.size(); ++i) {
     const K::Segment_2 s = edge(a, i);
@@ -101,10 +51,10 @@ CGAL::Bounded_side side_of(const Polygon& poly, const Vec2& p) {
 }  // namespace
 
 void validate(const Domain& d) {
-  check_polygon(d.outline, "domain.outline");
+  validate_outline(d.outline, "domain.outline");
   for (std::size_t h = 0; h < d.holes.size(); ++h) {
     const std::string item = "domain.holes[" + std::to_string(h) + "]";
-    check_polygon(d.holes[h], item);
+    validate_outline(d.holes[h], item);
     // Edges apart and one vertex inside: the whole hole is strictly inside the outline.
     if (edges_meet(d.holes[h], d.outline))
       throw GeometryError(item, "the hole touches or crosses the domain outline");
@@ -122,7 +72,7 @@ void validate(const Domain& d) {
     throw GeometryError("domain.zones",
                         "at most " + std::to_string(Domain::kMaxZones) + " zones are supported");
   for (std::size_t z = 0; z < d.zones.size(); ++z)
-    check_polygon(d.zones[z].outline, "domain.zones[" + std::to_string(z) + "]");
+    validate_outline(d.zones[z].outline, "domain.zones[" + std::to_string(z) + "]");
 }
 
 double area(const Domain& d) {

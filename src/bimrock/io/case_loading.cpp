@@ -1,5 +1,6 @@
 /// @file How a case is held and loaded: supports, loads (gravity, point loads, tractions, water)
-/// and the load stages, each under load or displacement control.
+/// and the load stages, each under load or displacement control, each excavating and installing
+/// blocks.
 #include <bimrock/io/case_sections.hpp>
 
 #include <cmath>
@@ -115,9 +116,13 @@ LoadsSpec read_loads(const Value& v) {
   return loads;
 }
 
+namespace {
+
 /// A load stage: its loads are added to the earlier stages' in `increments` steps, under load
-/// control or with a monitor's displacement prescribed (control).
-StageSpec read_stage(const Value& v) {
+/// control or with a monitor's displacement prescribed (control); it may excavate blocks and
+/// install blocks, and release a fraction (0, 1] of the excavation forces not yet released.
+/// @param excavated whether an earlier stage excavates; set when this one does.
+StageSpec read_stage(const Value& v, bool& excavated) {
   const Map m = open(v, "stages[]");
   StageSpec st;
   st.name = name(m.at("name"));
@@ -144,7 +149,32 @@ StageSpec read_stage(const Value& v) {
     d.source = control->ref();
     st.control = d;
   }
+  if (const auto excavate = m.find("excavate"))
+    st.excavate = read_block_selector(*excavate, "stages[].excavate");
+  if (const auto install = m.find("install"))
+    st.install = read_block_selector(*install, "stages[].install");
+  excavated = excavated || st.excavate.has_value();
+  if (const auto release = m.find("release")) {
+    if (!excavated)
+      release->fail(
+          "no stage up to this one excavates a block: release applies to the forces "
+          "of excavated blocks not yet released");
+    st.release = release->number();
+    if (st.release <= 0.0 || st.release > 1.0)
+      release->fail(
+          "must lie in (0, 1]: the fraction of the excavation forces not yet released "
+          "that this stage releases");
+  }
   return st;
+}
+
+}  // namespace
+
+/// The stages, in order. `release` applies to the forces of blocks excavated by this stage or
+/// an earlier one: before any excavation there is nothing to release.
+std::vector<StageSpec> read_stages(const Value& v) {
+  bool excavated = false;
+  return read_list(v, [&](const Value& element) { return read_stage(element, excavated); });
 }
 
 }  // namespace bimrock::case_file

@@ -103,9 +103,16 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
   if (const auto v = m.find("stages")) {
     if (const auto loads = m.find("loads"))
       loads->fail("give loads either here (an elastic analysis) or in stages, not both");
-    s.stages = read_list(*v, read_stage);
+    s.stages = read_stages(*v);
     if (s.stages.empty())
       v->fail("give at least one stage");
+  }
+  if (const auto v = m.find("initial_stress")) {
+    if (!m.has("stages"))
+      v->fail(
+          "is the stress in the rock before the first stage: give stages (an elastic "
+          "analysis, with loads, starts unstressed)");
+    s.initial_stress = read_initial_stress(*v);
   }
   if (const auto v = m.find("factor_of_safety")) {
     if (!m.has("stages"))

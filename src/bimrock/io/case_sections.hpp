@@ -21,8 +21,10 @@ std::vector<std::string_view> keys_of(std::string_view section);
 void require_keys(const Map& m, std::string_view section);
 Map open(const Value& v, std::string_view section);
 
-// case_selector.cpp: where a joint rule, support or traction applies.
+// case_selector.cpp: where a joint rule, support or traction applies; which blocks a stage
+// excavates or installs.
 Selector read_selector(const Map& m, const char* kinds);
+BlockSelector read_block_selector(const Value& v, std::string_view section);
 
 // case_settings.cpp: analysis, limits, output.
 AnalysisSettings read_analysis(const Value& v);
@@ -47,7 +49,10 @@ void resolve_groups(CaseSpec& s, const GmshMesh* mesh);
 // case_loading.cpp: supports, loads, stages.
 SupportSpec read_support(const Value& v);
 LoadsSpec read_loads(const Value& v);
-StageSpec read_stage(const Value& v);
+std::vector<StageSpec> read_stages(const Value& v);
+
+// case_initial_stress.cpp: initial_stress.
+InitialStressSpec read_initial_stress(const Value& v);
 
 // case_monitors.cpp: monitors.
 std::vector<MonitorSpec> read_monitors(const Value& v);

@@ -1,8 +1,10 @@
 /// @file Selectors: where a joint rule, support or traction applies (one of line, box,
-/// orientation or group).
+/// orientation or group), and which blocks a stage excavates or installs (one of region, box,
+/// material or blocks).
 #include <bimrock/io/case_sections.hpp>
 
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,6 +21,14 @@ std::pair<Vec2, Vec2> two_locations(const Value& v, const char* what) {
            std::to_string(p.size()));
   }
   return {location(p[0]), location(p[1])};
+}
+
+/// [[xmin, ymin], [xmax, ymax]]: a box, its lower-left corner first.
+BBox read_box(const Value& v) {
+  const auto [lo, hi] = two_locations(v, "a box [[xmin, ymin], [xmax, ymax]]");
+  if (lo.x() > hi.x() || lo.y() > hi.y())
+    v.fail("the first corner must be the lower-left one: [[xmin, ymin], [xmax, ymax]]");
+  return BBox{lo, hi};
 }
 
 }  // namespace
@@ -46,11 +56,8 @@ Selector read_selector(const Map& m, const char* kinds) {
     s.line = {a, b};
     s.source = line->ref();
   } else if (box) {
-    const auto [lo, hi] = two_locations(*box, "a box [[xmin, ymin], [xmax, ymax]]");
-    if (lo.x() > hi.x() || lo.y() > hi.y())
-      box->fail("the first corner must be the lower-left one: [[xmin, ymin], [xmax, ymax]]");
     s.kind = Selector::Kind::box;
-    s.box = BBox{lo, hi};
+    s.box = read_box(*box);
     s.source = box->ref();
   } else if (group) {
     s.kind = Selector::Kind::group;
@@ -69,6 +76,57 @@ Selector read_selector(const Map& m, const char* kinds) {
     s.angle_tolerance_deg = tol->number();
     if (s.angle_tolerance_deg < 0.0)
       tol->fail("must be >= 0 (degrees)");
+  }
+  return s;
+}
+
+/// The blocks a stage excavates or installs (`section`: "stages[].excavate" or
+/// "stages[].install"): exactly one of region (a polygon [m]; its shape is build_model's to
+/// check), box [m], material (a name) or blocks (indices >= 0, each once; build_model checks them
+/// against the model).
+BlockSelector read_block_selector(const Value& v, std::string_view section) {
+  const Map m = open(v, section);
+  const std::optional<Value> region = m.find("region");
+  const std::optional<Value> box = m.find("box");
+  const std::optional<Value> material = m.find("material");
+  const std::optional<Value> blocks = m.find("blocks");
+  const int given = int(region.has_value()) + int(box.has_value()) + int(material.has_value()) +
+                    int(blocks.has_value());
+  if (given == 0)
+    v.fail("say which blocks: give one of region, box, material or blocks");
+  if (given > 1)
+    v.fail("give only one of region, box, material or blocks");
+
+  BlockSelector s;
+  if (region) {
+    s.kind = BlockSelector::Kind::region;
+    for (const Value& p : region->list())
+      s.region.vertices.push_back(location(p));
+    if (s.region.size() < 3)
+      region->fail("a region is a polygon [[x, y], ...] of at least 3 points");
+    s.source = region->ref();
+  } else if (box) {
+    s.kind = BlockSelector::Kind::box;
+    s.box = read_box(*box);
+    s.source = box->ref();
+  } else if (material) {
+    s.kind = BlockSelector::Kind::material;
+    s.material = name(*material);
+    s.source = material->ref();
+  } else {
+    s.kind = BlockSelector::Kind::list;
+    std::set<int> seen;
+    for (const Value& b : blocks->list()) {
+      const int index = b.integer();
+      if (index < 0)
+        b.fail("must be a block index: a whole number >= 0 (blocks count from 0)");
+      if (!seen.insert(index).second)
+        b.fail("block " + std::to_string(index) + " is listed twice");
+      s.blocks.push_back(index);
+    }
+    if (s.blocks.empty())
+      blocks->fail("list at least one block index");
+    s.source = blocks->ref();
   }
   return s;
 }

@@ -4,7 +4,6 @@
 /// Units: SI throughout (m, Pa, Pa/m, N, N/m^3).
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <map>
@@ -129,23 +128,14 @@ struct BlockSelector {
 /// its increments, `release` of them in this stage and the rest in the next) and install blocks
 /// absent until then.
 struct StageSpec {
-  StageSpec() = default;
-  /// A stage of loads alone (no excavation), as code builds them.
-  StageSpec(std::string name_, LoadsSpec loads_, int increments_,
-            std::optional<DisplacementControlSpec> control_, SourceRef source_)
-      : name(std::move(name_)),
-        loads(std::move(loads_)),
-        increments(increments_),
-        control(std::move(control_)),
-        source(std::move(source_)) {}
-
   std::string name;
   LoadsSpec loads;
   int increments = 1;
   std::optional<DisplacementControlSpec> control;
   SourceRef source;
-  std::optional<BlockSelector> excavate;
-  std::optional<BlockSelector> install;
+  // After `source`, with initializers: positional initializations of the fields above still hold.
+  std::optional<BlockSelector> excavate{};
+  std::optional<BlockSelector> install{};
   double release = 1.0;  ///< fraction of the unreleased excavation forces released, (0, 1]
 };
 

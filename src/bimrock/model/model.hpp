@@ -82,9 +82,10 @@ struct Stage {
   int increments = 1;
   std::optional<DisplacementControl> control;
   SourceRef source;
-  std::vector<int> excavated;  ///< blocks removed at the stage's start (present until then), sorted
-  std::vector<int> installed;  ///< blocks added at the stage's start (absent until then), sorted
-  double release = 1.0;        ///< fraction of the unreleased excavation forces released here
+  // After `source`, with initializers: positional initializations of the fields above still hold.
+  std::vector<int> excavated{};  ///< blocks removed at the stage's start (present until then), sorted
+  std::vector<int> installed{};  ///< blocks added at the stage's start (absent until then), sorted
+  double release = 1.0;          ///< fraction of the unreleased excavation forces released here
 };
 
 struct Monitor {

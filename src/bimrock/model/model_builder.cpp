@@ -5,6 +5,7 @@
 #include <bimrock/model/block_generation.hpp>
 #include <bimrock/model/limits.hpp>
 #include <bimrock/model/model.hpp>
+#include <bimrock/model/stage_blocks.hpp>
 #include <bimrock/model/water_pressure.hpp>
 
 namespace bimrock {
@@ -512,6 +513,32 @@ class Builder {
       add_stage_water(st, stage, water_in_force);
       model_.stages.push_back(std::move(stage));
     }
+    resolve_stage_blocks(model_, spec_.stages);
+    add_initial_stress();
+  }
+
+  // The stress before the first stage: a nonlinear analysis only, its values finite.
+  void add_initial_stress() {
+    if (!spec_.initial_stress)
+      return;
+    const InitialStressSpec& s = *spec_.initial_stress;
+    const std::string item = s.source.item.empty() ? "initial_stress" : s.source.item;
+    if (spec_.stages.empty())
+      fail({s.source.line, item},
+           "is the stress before the first stage: give stages (an elastic analysis starts "
+           "unstressed)");
+    if (!s.uniform.allFinite())
+      fail({s.source.line, item + ".stress"}, "must be finite");
+    if (s.gravity) {
+      const SourceRef ref{s.source.line, item + ".gravity"};
+      if (!std::isfinite(s.gravity->ground_level))
+        fail(ref, "ground_level must be finite");
+      if (!finite_positive(s.gravity->unit_weight))
+        fail(ref, "unit_weight must be positive");
+      if (!finite_non_negative(s.gravity->k0))
+        fail(ref, "k0 must be >= 0");
+    }
+    model_.initial_stress = s;
   }
 
   void add_monitors() {
