@@ -12,6 +12,7 @@
 #include <bimrock/analysis/factor_of_safety_search.hpp>
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/increment.hpp>
+#include <bimrock/analysis/initial_state.hpp>
 #include <bimrock/analysis/load_stepping.hpp>
 #include <bimrock/analysis/stage_structure.hpp>
 #include <bimrock/analysis/support_check.hpp>
@@ -118,44 +119,6 @@ PlasticResult with_statistics(PlasticResult result, const StageStructure& struct
   return result;
 }
 
-// What the initial stress balances: the first stage's loads less its internal forces, and the
-// points where it violates a strength. Throws ModelError listing those points unless the case
-// lets them yield.
-InitialStressCheck check_initial_stress(const Model& model, const std::vector<YieldPoint>& points,
-                                        const PlasticOptions& options) {
-  InitialStressCheck check;
-  const Eigen::VectorXd loads = assemble_loads(model, model.stages.front().loads);
-  const Eigen::VectorXd internal = initial_internal_forces(model);
-  check.residual = (loads - internal).cwiseAbs().maxCoeff();
-  const double scale = std::max(loads.cwiseAbs().maxCoeff(), internal.cwiseAbs().maxCoeff());
-  check.relative_residual = scale > 0.0 ? check.residual / scale : 0.0;
-  const std::vector<char> present = blocks_present(model, -1);
-  const YieldEvaluator yield(model, points, &present);
-  YieldValues f;
-  double stress_scale = 0.0;
-  yield.evaluate(std::vector<PlasticState>(points.size()), Eigen::VectorXd::Zero(model.n_dofs()), f,
-                 &stress_scale);
-  const double tol = options.yield_tolerance * std::max(stress_scale, 1.0);
-  std::vector<int> blocks;
-  for (std::size_t p = 0; p < points.size(); ++p) {
-    if (f.largest(p) <= tol)
-      continue;
-    ++check.violated_points;
-    blocks.push_back(points[p].block_i);
-  }
-  if (check.violated_points > 0 && !model.initial_stress->allow_yield) {
-    std::sort(blocks.begin(), blocks.end());
-    blocks.erase(std::unique(blocks.begin(), blocks.end()), blocks.end());
-    throw ModelError(std::to_string(check.violated_points) +
-                         " yield points violate their strength under the initial stress, at " +
-                         name_blocks(model, blocks) +
-                         ": give a field within the strengths, or let them yield in the first "
-                         "stage (initial_stress.allow_yield: true)",
-                     blocks);
-  }
-  return check;
-}
-
 // The stages of the model from the unloaded state, into `result` (its points given): every
 // increment carried is recorded; the first collapse or undecided step ends them. `at_stage_end`
 // (if any) is called with each stage carried. A stage that excavates stands on K of the blocks
@@ -164,8 +127,8 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
                 const PlasticOptions& options, const CandidateTuning& tuning,
                 IncrementMemory& memory, const IncrementCallback& on_increment,
                 PlasticResult& result, const std::function<void(int)>& at_stage_end = {}) {
-  result.state.u = Eigen::VectorXd::Zero(model.n_dofs());
-  result.state.points.assign(result.points.size(), PlasticState{});
+  Eigen::VectorXd unbalanced;  // by the initial stress's points held to their strengths
+  result.state = initial_state(model, result.points, unbalanced);
   structure.stand_on(blocks_present(model, -1));
   Eigen::VectorXd unreleased = Eigen::VectorXd::Zero(model.n_dofs());
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
@@ -183,6 +146,8 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
       structure.stand_on(present);
     }
     Eigen::VectorXd load = stage_loads(model, st, structure.present());
+    if (st == 0)
+      load += unbalanced;
     load += stage.release * unreleased;
     unreleased *= 1.0 - stage.release;
     const YieldEvaluator yield(model, result.points, &structure.present());
