@@ -16,11 +16,12 @@
 #include <bimrock/assembly/yield_values.hpp>
 
 #include "support/cases.hpp"
+#include "support/degrees.hpp"
 
 namespace bimrock {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+using testing::kDeg;
 constexpr double kUnitWeight = 25e3;  // [N/m^3]
 
 struct RandomCase {

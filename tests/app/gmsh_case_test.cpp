@@ -36,7 +36,7 @@ nlohmann::json read_with_meshio(const std::string& file) {
   return nlohmann::json::parse(text);
 }
 
-const std::string kMaterials = R"(schema: 1
+const std::string kMeshMaterials = R"(schema: 1
 materials:
   granite: {E: 50.0e9, nu: 0.25, unit_weight: 26.0e3}
   clay: {E: 1.0e9, nu: 0.3, unit_weight: 20.0e3}
@@ -47,7 +47,7 @@ joint_materials:
 /// The slope of tests/data/gmsh/slope.geo on a fixed base and rollers, under gravity; the fault
 /// (a physical curve inside the soil) gets its joint material by a rule.
 std::string slope_case(const std::string& mesh_file) {
-  return kMaterials + "mesh:\n  file: " + mesh_file + R"(
+  return kMeshMaterials + "mesh:\n  file: " + mesh_file + R"(
   materials: {rock: granite, soil: clay}
 joints:
   rules:
@@ -138,7 +138,7 @@ TEST_P(GmshBadInputs, StopWithOneClearMessageAndWriteNothing) {
 
 /// A case on the one-surface meshes ("rock", with the physical curve "base"); mesh on line 7.
 std::string square_case(const std::string& file) {
-  return kMaterials + "mesh:\n  file: " + data(file) +
+  return kMeshMaterials + "mesh:\n  file: " + data(file) +
          "\n  materials: {rock: granite}\nsupports:\n  - {group: base}\n";
 }
 
@@ -163,16 +163,16 @@ INSTANTIATE_TEST_SUITE_P(
                     "version22.msh:2: $MeshFormat: MSH version 2.2 is not supported"},
         BadMeshCase{"CellsWithoutGroup", square_case("no_groups.msh"),
                     "no_groups.msh:31: element 2 (surface 1): belongs to no physical surface"},
-        BadMeshCase{
-            "UnmappedGroup",
-            kMaterials + "mesh:\n  file: " + data("slope.msh") + "\n  materials: {rock: granite}\n",
-            "case.yaml:9: mesh.materials: no material for physical surface 'soil'"},
+        BadMeshCase{"UnmappedGroup",
+                    kMeshMaterials + "mesh:\n  file: " + data("slope.msh") +
+                        "\n  materials: {rock: granite}\n",
+                    "case.yaml:9: mesh.materials: no material for physical surface 'soil'"},
         BadMeshCase{"UnknownGroupInMaterials",
-                    kMaterials + "mesh:\n  file: " + data("slope.msh") +
+                    kMeshMaterials + "mesh:\n  file: " + data("slope.msh") +
                         "\n  materials: {rock: granite, sand: clay}\n",
                     "case.yaml:9: mesh.materials.sand: 'sand' is not a physical surface of "},
         BadMeshCase{"UnknownGroupInSelector",
-                    kMaterials + "mesh:\n  file: " + data("slope.msh") +
+                    kMeshMaterials + "mesh:\n  file: " + data("slope.msh") +
                         "\n  materials: {rock: granite, soil: clay}\nsupports:\n"
                         "  - {group: bottom}\n",
                     "case.yaml:11: supports[0].group: unknown group 'bottom': not a physical "
@@ -180,28 +180,28 @@ INSTANTIATE_TEST_SUITE_P(
                         data("slope.msh") +
                         " (its physical curves: 'base', 'fault', 'left', 'right', 'slope_face')"},
         BadMeshCase{"SurfaceGroupInSelector",
-                    kMaterials + "mesh:\n  file: " + data("slope.msh") +
+                    kMeshMaterials + "mesh:\n  file: " + data("slope.msh") +
                         "\n  materials: {rock: granite, soil: clay}\nloads:\n  tractions:\n"
                         "    - {group: soil, normal: -1.0e6}\n",
                     "case.yaml:12: loads.tractions[0].group: 'soil' is a physical surface"},
-        BadMeshCase{
-            "UnknownMaterial",
-            kMaterials + "mesh:\n  file: " + data("fan.msh") + "\n  materials: {rock: granit}\n",
-            "case.yaml:9: mesh.materials.rock: unknown material 'granit'"},
+        BadMeshCase{"UnknownMaterial",
+                    kMeshMaterials + "mesh:\n  file: " + data("fan.msh") +
+                        "\n  materials: {rock: granit}\n",
+                    "case.yaml:9: mesh.materials.rock: unknown material 'granit'"},
         BadMeshCase{"GroupWithoutMesh",
-                    kMaterials +
+                    kMeshMaterials +
                         "blocks:\n  - {material: granite, vertices: [[0, 0], [1, 0], [1, 1]]}\n"
                         "supports:\n  - {group: base}\n",
                     "case.yaml:10: supports[0].group: a group selects the line elements of a "
                     "mesh's physical curve"},
         BadMeshCase{"MeshAndBlocks",
-                    kMaterials +
+                    kMeshMaterials +
                         "blocks:\n  - {material: granite, vertices: [[0, 0], [1, 0], [1, "
                         "1]]}\nmesh:\n  file: " +
                         data("fan.msh") + "\n  materials: {rock: granite}\n",
                     "case.yaml:9: mesh: give one of blocks, a domain or a mesh, not several"},
         BadMeshCase{"UnknownKey",
-                    kMaterials + "mesh:\n  file: " + data("fan.msh") +
+                    kMeshMaterials + "mesh:\n  file: " + data("fan.msh") +
                         "\n  materials: {rock: granite}\n  interface: continuum\n",
                     "case.yaml:10: mesh.interface: unknown key 'interface'"},
         BadMeshCase{"MissingFile", square_case("no_such.msh"),

@@ -11,7 +11,7 @@
 namespace bimrock {
 namespace {
 
-const std::string kMaterials = R"(schema: 1
+const std::string kMaterialsSupportsGravity = R"(schema: 1
 materials:
   rock: {E: 10.0e9, nu: 0.2, unit_weight: 25.0e3}
 joint_materials:
@@ -23,7 +23,7 @@ loads: {gravity: [0, -1]}
 )";
 
 // A 6 m x 4 m rectangle cut by horizontal joints every 1 m and vertical joints every 2 m.
-const std::string kGrid = kMaterials + R"(domain:
+const std::string kGrid = kMaterialsSupportsGravity + R"(domain:
   outline: [[0, 0], [6, 0], [6, 4], [0, 4]]
   material: rock
   joint_sets:
@@ -53,7 +53,7 @@ TEST(MeshCommand, TwoOrthogonalPersistentSetsCutTheExpectedGrid) {
 TEST(MeshCommand, ATunnelIsCutOutAndTheRunConservesItsArea) {
   // A square hole of 1 m^2 in the middle: area 24 - 1. The cut around it (rock bridges and
   // convex partition) joins its pieces by continuum interfaces, and the case solves.
-  const std::string text = kMaterials + R"(domain:
+  const std::string text = kMaterialsSupportsGravity + R"(domain:
   outline: [[0, 0], [6, 0], [6, 4], [0, 4]]
   holes:
     - [[2.5, 1.5], [3.5, 1.5], [3.5, 2.5], [2.5, 2.5]]
@@ -76,7 +76,7 @@ TEST(MeshCommand, ATunnelIsCutOutAndTheRunConservesItsArea) {
 
 TEST(MeshCommand, BadGeometryIsNamedWithItsLine) {
   // The hole (line 13) reaches outside the outline.
-  const std::string text = kMaterials + R"(domain:
+  const std::string text = kMaterialsSupportsGravity + R"(domain:
   outline: [[0, 0], [6, 0], [6, 4], [0, 4]]
   holes:
     - [[5.5, 1], [7, 1], [7, 2], [5.5, 2]]
@@ -88,7 +88,7 @@ TEST(MeshCommand, BadGeometryIsNamedWithItsLine) {
   EXPECT_FALSE(std::filesystem::exists(r.folder / "mesh"));
   const testing::CommandResult spacing = testing::run_bimrock(
       "mesh",
-      kMaterials +
+      kMaterialsSupportsGravity +
           "domain:\n  outline: [[0, 0], [6, 0], [6, 4], [0, 4]]\n  material: rock\n"
           "  joint_sets:\n    - {material: horizontal, dip: 0, spacing: 0}\n",
       "-o mesh");

@@ -21,7 +21,7 @@
 namespace bimrock {
 namespace {
 
-Vec6 random_unknowns(std::mt19937& rng) {
+Vec6 random_block_unknowns(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Vec6 d;
   d << u(rng), u(rng), 0.1 * u(rng), 0.01 * u(rng), 0.01 * u(rng), 0.01 * u(rng);
@@ -29,7 +29,7 @@ Vec6 random_unknowns(std::mt19937& rng) {
 }
 
 // Irregular blocks with a fixed base and a roller side: interfaces of every kind.
-Model assembly(unsigned seed) {
+Model supported_blocks(unsigned seed) {
   CaseSpec c;
   c.file = "kinematics";
   c.block_materials = {testing::rock(20e9, 0.25)};
@@ -46,7 +46,7 @@ TEST(BlockQ, IsTheTranslationAtTheCentroidAndItsDerivativesAreTheStrains) {
   for (int trial = 0; trial < 50; ++trial) {
     const Polygon poly = testing::random_convex_polygon(rng, 3 + trial % 6);
     const Vec2 c = testing::fan_moments(poly).centroid;
-    const Vec6 d = random_unknowns(rng);
+    const Vec6 d = random_block_unknowns(rng);
     // At the centroid only the translation (u0, v0) remains.
     const Vec2 at_c = block_Q(c, c) * d;
     EXPECT_EQ(at_c.x(), d(0));
@@ -71,7 +71,7 @@ TEST(BlockQ, EveryBlockReproducesARigidMotionAndAUniformStrainOfTheWholeAssembly
   std::mt19937 rng(12);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (unsigned seed : {1u, 2u, 3u}) {
-    const Model m = assembly(seed);
+    const Model m = supported_blocks(seed);
     // A rigid motion about an arbitrary point o: u(p) = t + omega z x (p - o), no strain.
     const Vec2 t(u(rng), u(rng));
     const Vec2 o(u(rng), u(rng));
@@ -99,7 +99,7 @@ TEST(InterfaceB, IsTheJumpOfTheBlockFieldsInTheFrameOfTheOutwardNormal) {
   int interfaces = 0;
   int supports = 0;
   for (unsigned seed : {1u, 2u, 3u}) {
-    const Model m = assembly(seed);
+    const Model m = supported_blocks(seed);
     for (const Interface& f : m.interfaces) {
       const Block& bi = m.blocks[f.block_i];
       // n points from i into j: it is the outward normal of block i's edge (and the inward one
@@ -107,8 +107,8 @@ TEST(InterfaceB, IsTheJumpOfTheBlockFieldsInTheFrameOfTheOutwardNormal) {
       const Vec2 n = testing::outward_normal_of_edge_holding(bi.polygon, f.segment);
       ASSERT_LT((f.normal - n).norm(), 1e-12);
       const Vec2 s(-n.y(), n.x());
-      const Vec6 di = random_unknowns(rng);
-      const Vec6 dj = random_unknowns(rng);
+      const Vec6 di = random_block_unknowns(rng);
+      const Vec6 dj = random_block_unknowns(rng);
       for (double xi : {0.0, 0.3 + 0.4 * (u(rng) + 1.0) / 2.0, 1.0}) {
         const Vec2 p = f.segment.at(xi);
         Vec2 jump = -testing::block_displacement(bi.centroid, di, p);
@@ -139,7 +139,7 @@ TEST(InterfaceB, IsTheJumpOfTheBlockFieldsInTheFrameOfTheOutwardNormal) {
 TEST(InterfaceB, ACommonAffineFieldOpensNoInterfaceAndMovingAwayOpens) {
   std::mt19937 rng(14);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const Model m = assembly(4);
+  const Model m = supported_blocks(4);
   const Vec2 t(u(rng), u(rng));
   Eigen::Matrix2d g;
   g << 0.01 * u(rng), 0.01 * u(rng), 0.01 * u(rng), 0.01 * u(rng);
@@ -174,7 +174,7 @@ TEST(InterfaceB, ACommonAffineFieldOpensNoInterfaceAndMovingAwayOpens) {
 }
 
 TEST(SupportB, BlockLiftedOffTheGroundOpensIt) {
-  const Model m = assembly(5);
+  const Model m = supported_blocks(5);
   int supports = 0;
   for (const Interface& f : m.interfaces) {
     if (!f.is_support())

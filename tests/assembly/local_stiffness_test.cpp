@@ -37,7 +37,7 @@ double energy_density(double young, double poisson, PlaneMode plane, double ex, 
   return 0.5 * lambda * (ex + ey) * (ex + ey) + mu * (ex * ex + ey * ey + 0.5 * gxy * gxy);
 }
 
-Model assembly(unsigned seed, Integration rule, double thickness) {
+Model spring_supported_blocks(unsigned seed, Integration rule, double thickness) {
   CaseSpec c;
   c.file = "stiffness";
   c.settings.thickness = thickness;
@@ -74,7 +74,7 @@ double stiffness_energy(const Model& m, const Interface& f, const Vec12& x) {
   return 0.5 * x.dot(interface_stiffness(f, ci, m.blocks[f.block_j].centroid, t) * x);
 }
 
-Vec12 random_unknowns(std::mt19937& rng) {
+Vec12 random_pair_unknowns(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1e-3, 1e-3);
   Vec12 x;
   for (int k = 0; k < 12; ++k)
@@ -119,9 +119,9 @@ TEST(InterfaceStiffness, EnergyIsTheSpringEnergyIntegratedAlongTheInterface) {
   int checked = 0;
   for (unsigned seed : {1u, 2u}) {
     for (Integration rule : {Integration::gauss, Integration::lobatto}) {
-      const Model m = assembly(seed, rule, 0.7);
+      const Model m = spring_supported_blocks(seed, rule, 0.7);
       for (const Interface& f : m.interfaces) {
-        const Vec12 x = random_unknowns(rng);
+        const Vec12 x = random_pair_unknowns(rng);
         const double l = f.segment.length();
         const auto springs = [&](const Eigen::Vector2d& d) {
           return f.normal_stiffness * d(0) * d(0) + f.shear_stiffness * d(1) * d(1);
@@ -157,7 +157,7 @@ TEST(InterfaceStiffness, IsPositiveSemiDefiniteAndSingularOnFieldsWithNoJump) {
   int fixed = 0;
   int rollers = 0;
   for (Integration rule : {Integration::gauss, Integration::lobatto}) {
-    const Model m = assembly(3, rule, 0.7);
+    const Model m = spring_supported_blocks(3, rule, 0.7);
     for (const Interface& f : m.interfaces) {
       const double t = m.settings.thickness;
       const Vec2& ci = m.blocks[f.block_i].centroid;

@@ -18,14 +18,14 @@
 namespace bimrock {
 namespace {
 
-constexpr double kThickness = 0.8;
+constexpr double kPointsThickness = 0.8;
 
 // Joints: strength, subdivided in three (end-point rule); the base: strength, Gauss; one side: a
 // rigid support with no strength (no points). Blocks: every block has a strength.
-Model assembly(unsigned seed) {
+Model blocks_with_strength(unsigned seed) {
   CaseSpec c;
   c.file = "points";
-  c.settings.thickness = kThickness;
+  c.settings.thickness = kPointsThickness;
   c.block_materials = {testing::rock(20e9, 0.25)};
   BlockStrength b;
   b.cohesion = 1e6;
@@ -50,7 +50,7 @@ Model assembly(unsigned seed) {
 
 TEST(YieldPoints, WeightsAddUpToTheLengthOfTheJointsAndTheAreaOfTheBlocks) {
   for (unsigned seed : {1u, 2u, 3u}) {
-    const Model m = assembly(seed);
+    const Model m = blocks_with_strength(seed);
     const std::vector<YieldPoint> points = make_yield_points(m);
     double joint_length = 0.0;
     double gauss_length = 0.0;
@@ -84,9 +84,9 @@ TEST(YieldPoints, WeightsAddUpToTheLengthOfTheJointsAndTheAreaOfTheBlocks) {
       (f.integration == Integration::gauss ? gauss_weight : interface_weight) += p.weight;
       lobatto_points += f.integration == Integration::lobatto ? 1 : 0;
     }
-    EXPECT_NEAR(interface_weight, kThickness * joint_length, 1e-12 * joint_length);
-    EXPECT_NEAR(gauss_weight, kThickness * gauss_length, 1e-12 * gauss_length);
-    EXPECT_NEAR(block_weight, kThickness * area, 1e-12 * area);
+    EXPECT_NEAR(interface_weight, kPointsThickness * joint_length, 1e-12 * joint_length);
+    EXPECT_NEAR(gauss_weight, kPointsThickness * gauss_length, 1e-12 * gauss_length);
+    EXPECT_NEAR(block_weight, kPointsThickness * area, 1e-12 * area);
     // A joint of k pieces has k + 1 end points once the shared ends are merged.
     EXPECT_EQ(lobatto_points, lobatto_pieces + static_cast<int>(pieces.size()));
     EXPECT_EQ(lobatto_pieces, 3 * static_cast<int>(pieces.size()));

@@ -14,13 +14,12 @@
 #include <bimrock/geometry/seeded_random.hpp>
 
 #include "block_checks.hpp"
+#include "support/rectangle.hpp"
 
 namespace bimrock {
 namespace {
 
-Polygon rect(double x0, double y0, double x1, double y1) {
-  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
-}
+using testing::rectangle;
 
 BlockCut cut(const Domain& d, const std::vector<JointSet>& sets,
              const std::vector<Joint>& joints = {}, const CutOptions& options = {}) {
@@ -60,7 +59,7 @@ TEST(BlockCutter, SquareCutByTwoOrthogonalSetsGivesTheGrid) {
   // [0,4] x [0,3] cut by y = k and x = k: 4 columns x 3 rows of unit squares. Interior joint
   // pieces: 3 vertical lines x 3 rows + 2 horizontal lines x 4 columns = 17; the outline is
   // cut into 2 * (4 + 3) = 14 unit pieces; vertices 5 x 4 = 20.
-  const BlockCut c = cut({rect(0, 0, 4, 3), {}, {}}, {kBedding, kCross});
+  const BlockCut c = cut({rectangle(0, 0, 4, 3), {}, {}}, {kBedding, kCross});
   const auto blocks = block_polygons(c);
   ASSERT_EQ(blocks.size(), 12u);
   for (double a : sorted_areas(blocks))
@@ -78,7 +77,7 @@ TEST(BlockCutter, SquareCutByTwoOrthogonalSetsGivesTheGrid) {
 }
 
 TEST(BlockCutter, JointEdgesCarryTheirSetAndMaterial) {
-  const Domain d{rect(0, 0, 4, 3), {}, {}};
+  const Domain d{rectangle(0, 0, 4, 3), {}, {}};
   const std::vector<JointSet> sets{kBedding, kCross};
   const auto traces = generate_traces(sets, {}, bbox_of(d));
   const BlockCut c = cut_blocks(d, traces);
@@ -106,7 +105,7 @@ TEST(BlockCutter, StaggeredSetGivesABrickWall) {
                 .trace_length = 1.0,
                 .gap = 1.0,
                 .staggered = true};
-  const BlockCut c = cut({rect(0, 0, 8, 4), {}, {}}, {kBedding, head});
+  const BlockCut c = cut({rectangle(0, 0, 8, 4), {}, {}}, {kBedding, head});
   const auto blocks = block_polygons(c);
   ASSERT_EQ(blocks.size(), 10u);
   EXPECT_EQ(sorted_areas(blocks), sorted_areas(brick_pattern(2, 4, 4.0, 1.0, Stagger::rows)));
@@ -128,7 +127,7 @@ TEST(BlockCutter, DanglingTraceEndsAreExtendedAsRockBridges) {
                 .origin = {0.5, 0.25},
                 .trace_length = 0.5,
                 .gap = 0.5};
-  const BlockCut c = cut({rect(0, 0, 4, 2), {}, {}}, {kBedding, part});
+  const BlockCut c = cut({rectangle(0, 0, 4, 2), {}, {}}, {kBedding, part});
   const auto blocks = block_polygons(c);
   ASSERT_EQ(blocks.size(), 10u);
   EXPECT_EQ(c.stats.n_rock_bridges, 16);
@@ -216,7 +215,7 @@ TEST(BlockCutter, TunnelIsExcludedAndJoinedByTwoVerticalCuts) {
   for (int k = 0; k < 8; ++k)
     octagon.vertices.emplace_back(5.0 + 0.8 * std::cos(k * M_PI / 4),
                                   5.0 + 0.8 * std::sin(k * M_PI / 4));
-  const Domain d{rect(0, 0, 10, 10), {octagon}, {}};
+  const Domain d{rectangle(0, 0, 10, 10), {octagon}, {}};
   JointSet x{.material = "x", .dip_deg = 90.0, .spacing = 2.0};
   JointSet y{.material = "y", .dip_deg = 0.0, .spacing = 2.0};
   const BlockCut c = cut(d, {x, y});
@@ -239,7 +238,7 @@ TEST(BlockCutter, TunnelIsExcludedAndJoinedByTwoVerticalCuts) {
 
 TEST(BlockCutter, TunnelAlignedWithTheGridRemovesOneCell) {
   // Grid of 2 m on [0,10]^2 with the hole [4,6]^2 = one cell: 24 blocks of 4 (hand count).
-  const Domain d{rect(0, 0, 10, 10), {rect(4, 4, 6, 6)}, {}};
+  const Domain d{rectangle(0, 0, 10, 10), {rectangle(4, 4, 6, 6)}, {}};
   JointSet x{.material = "x", .dip_deg = 90.0, .spacing = 2.0};
   JointSet y{.material = "y", .dip_deg = 0.0, .spacing = 2.0};
   const BlockCut c = cut(d, {x, y});
@@ -256,7 +255,7 @@ TEST(BlockCutter, SliversAreMergedIntoTheirLongestNeighbour) {
   // and x = 2.001 makes two slivers of 0.0015 m^2 (one per row). With min_block_area = 0.01
   // both merge: 3 columns x 2 rows = 6 blocks, area 9, and each merge turns one joint piece
   // (a side of the strip, 1.5 m) into intact rock.
-  const Domain d{rect(0, 0, 3, 3), {}, {}};
+  const Domain d{rectangle(0, 0, 3, 3), {}, {}};
   const std::vector<Joint> joints{{"j", {{1, -1}, {1, 4}}},
                                   {"j", {{2, -1}, {2, 4}}},
                                   {"j", {{-1, 1.5}, {4, 1.5}}},
@@ -281,7 +280,7 @@ TEST(BlockCutter, NearlyConcurrentJointsLeaveNoSliver) {
   // bottom-right quarters in two and clips a triangle of legs e (area 5e-15) off the corner
   // (1,1) of the top-right one: 7 blocks. The exact arrangement finds that triangle; the merge
   // puts it back into the top-right quarter across its longest side: 6 blocks.
-  const Domain d{rect(0, 0, 2, 2), {}, {}};
+  const Domain d{rectangle(0, 0, 2, 2), {}, {}};
   const std::vector<Joint> joints{
       {"j", {{1, -1}, {1, 3}}}, {"j", {{-1, 1}, {3, 1}}}, {"j", {{-1, 3 + 1e-7}, {3, -1 + 1e-7}}}};
   const auto traces = generate_traces({}, joints, bbox_of(d));
@@ -298,7 +297,7 @@ TEST(BlockCutter, ZoneOutlinesCutBlocksAndNameTheirZone) {
   // [0,4] x [0,2] with joints x = 0.5, 1.5, 2.5, 3.5 and a zone [-1,2] x [-1,3] reaching beyond
   // the domain: its side x = 2 cuts the block [1.5, 2.5] in two. Blocks: [0,.5], [.5,1.5],
   // [1.5,2], [2,2.5], [2.5,3.5], [3.5,4]: 6, the first 3 in zone 0.
-  const Domain d{rect(0, 0, 4, 2), {}, {{"weak", rect(-1, -1, 2, 3)}}};
+  const Domain d{rectangle(0, 0, 4, 2), {}, {{"weak", rectangle(-1, -1, 2, 3)}}};
   JointSet x{.material = "x", .dip_deg = 90.0, .spacing = 1.0, .origin = {0.5, 0.0}};
   const BlockCut c = cut(d, {x});
   ASSERT_EQ(c.blocks.size(), 6u);
@@ -313,7 +312,7 @@ TEST(BlockCutter, ZoneOutlinesCutBlocksAndNameTheirZone) {
 }
 
 TEST(BlockCutter, SameSeedGivesByteIdenticalBlocksAndADifferentSeedDoesNot) {
-  const Domain d{rect(0, 0, 12, 8), {}, {}};
+  const Domain d{rectangle(0, 0, 12, 8), {}, {}};
   const auto sets_with = [](std::uint64_t seed) {
     return std::vector<JointSet>{{.material = "a",
                                   .dip_deg = 30.0,
@@ -338,7 +337,7 @@ TEST(BlockCutter, SameSeedGivesByteIdenticalBlocksAndADifferentSeedDoesNot) {
 }
 
 TEST(BlockCutter, BlocksShareVertexCoordinatesExactly) {
-  const Domain d{rect(0, 0, 6, 6), {}, {}};
+  const Domain d{rectangle(0, 0, 6, 6), {}, {}};
   const BlockCut c = cut(d, {{.material = "a", .dip_deg = 33.0, .spacing = 0.9},
                              {.material = "b", .dip_deg = 101.0, .spacing = 1.3}});
   std::map<int, int> uses;
@@ -368,7 +367,7 @@ TEST(BlockCutter, ManyCorneredRegionsUseTheApproximatePartition) {
   for (int k = 0; k < n; ++k)
     tunnel.vertices.emplace_back(5.0 + 2.0 * std::cos(2 * M_PI * k / n),
                                  5.0 + 2.0 * std::sin(2 * M_PI * k / n));
-  const Domain d{rect(0, 0, 10, 10), {tunnel}, {}};
+  const Domain d{rectangle(0, 0, 10, 10), {tunnel}, {}};
   const BlockCut c = cut_blocks(d, {});
   const auto blocks = block_polygons(c);
   EXPECT_EQ(c.stats.n_hole_cuts, 2);
@@ -419,7 +418,7 @@ TEST_P(RandomCuts, TileTheDomainWithConvexBlocks) {
     } catch (const GeometryError&) {  // overlaps another tunnel or the outline: leave it out
     }
   }
-  d.zones.push_back({"zone", rect(0, 0, 10.3, 25)});
+  d.zones.push_back({"zone", rectangle(0, 0, 10.3, 25)});
   std::vector<JointSet> sets;
   const int n_sets = 1 + static_cast<int>(r.uniform(0, 3));
   for (int k = 0; k < n_sets; ++k) {
@@ -466,13 +465,15 @@ TEST(BlockCutter, BadInputNamesTheItem) {
                                        {{{0, 1}, {1, 0}}, -1, 1, "j"},
                                        {{{0, NAN}, {1, 0}}, -1, 2, "j"}};
   try {
-    cut_blocks({rect(0, 0, 1, 1), {}, {}}, traces);
+    cut_blocks({rectangle(0, 0, 1, 1), {}, {}}, traces);
     FAIL();
   } catch (const GeometryError& e) {
     EXPECT_EQ(e.item(), "traces[2]");
   }
   try {
-    cut_blocks({rect(0, 0, 1, 1), {rect(0.2, 0.2, 0.4, 0.4), rect(0.3, 0.3, 0.6, 0.6)}, {}}, {});
+    cut_blocks(
+        {rectangle(0, 0, 1, 1), {rectangle(0.2, 0.2, 0.4, 0.4), rectangle(0.3, 0.3, 0.6, 0.6)}, {}},
+        {});
     FAIL();
   } catch (const GeometryError& e) {
     EXPECT_EQ(e.item(), "domain.holes[1]");

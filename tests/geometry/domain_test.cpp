@@ -5,12 +5,12 @@
 #include <bimrock/geometry/domain.hpp>
 #include <bimrock/geometry/geometry_error.hpp>
 
+#include "support/rectangle.hpp"
+
 namespace bimrock {
 namespace {
 
-Polygon rect(double x0, double y0, double x1, double y1) {
-  return {{{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}};
-}
+using testing::rectangle;
 
 // An L: the square [0,10]^2 less its top-right quarter [5,10]^2 (area 100 - 25 = 75).
 Polygon l_shape() {
@@ -33,7 +33,9 @@ TEST(Domain, AreaIsOutlineLessHoles) {
 }
 
 TEST(Domain, ZoneContainingPicksTheFirstListed) {
-  Domain d{rect(0, 0, 4, 2), {}, {{"weak", rect(-1, -1, 2, 3)}, {"strong", rect(1, -1, 5, 3)}}};
+  Domain d{rectangle(0, 0, 4, 2),
+           {},
+           {{"weak", rectangle(-1, -1, 2, 3)}, {"strong", rectangle(1, -1, 5, 3)}}};
   EXPECT_EQ(zone_containing(d, {0.5, 1.0}), 0);
   EXPECT_EQ(zone_containing(d, {1.5, 1.0}), 0);  // in both: the first wins
   EXPECT_EQ(zone_containing(d, {3.0, 1.0}), 1);
@@ -80,29 +82,33 @@ INSTANTIATE_TEST_SUITE_P(
         BadDomain{
             "spike", {{{{0, 0}, {2, 0}, {1, 0}, {1, 1}}}, {}, {}}, "domain.outline", "folds back"},
         BadDomain{"hole_outside",
-                  {rect(0, 0, 10, 10), {rect(1, 1, 2, 2), rect(11, 1, 12, 2)}, {}},
+                  {rectangle(0, 0, 10, 10), {rectangle(1, 1, 2, 2), rectangle(11, 1, 12, 2)}, {}},
                   "domain.holes[1]",
                   "outside"},
         BadDomain{"hole_crossing",
-                  {rect(0, 0, 10, 10), {rect(8, 1, 12, 2)}, {}},
+                  {rectangle(0, 0, 10, 10), {rectangle(8, 1, 12, 2)}, {}},
                   "domain.holes[0]",
                   "crosses the domain outline"},
-        BadDomain{
-            "hole_in_the_notch", {l_shape(), {rect(6, 6, 7, 7)}, {}}, "domain.holes[0]", "outside"},
+        BadDomain{"hole_in_the_notch",
+                  {l_shape(), {rectangle(6, 6, 7, 7)}, {}},
+                  "domain.holes[0]",
+                  "outside"},
         BadDomain{"holes_overlap",
-                  {rect(0, 0, 10, 10), {rect(1, 1, 3, 3), rect(2, 2, 4, 4)}, {}},
+                  {rectangle(0, 0, 10, 10), {rectangle(1, 1, 3, 3), rectangle(2, 2, 4, 4)}, {}},
                   "domain.holes[1]",
                   "overlaps domain.holes[0]"},
         BadDomain{"hole_in_hole",
-                  {rect(0, 0, 10, 10), {rect(1, 1, 5, 5), rect(2, 2, 3, 3)}, {}},
+                  {rectangle(0, 0, 10, 10), {rectangle(1, 1, 5, 5), rectangle(2, 2, 3, 3)}, {}},
                   "domain.holes[1]",
                   "overlaps domain.holes[0]"},
         BadDomain{"holes_touch",
-                  {rect(0, 0, 10, 10), {rect(1, 1, 3, 3), rect(3, 1, 4, 3)}, {}},
+                  {rectangle(0, 0, 10, 10), {rectangle(1, 1, 3, 3), rectangle(3, 1, 4, 3)}, {}},
                   "domain.holes[1]",
                   "touches"},
         BadDomain{"bad_zone",
-                  {rect(0, 0, 10, 10), {}, {{"a", rect(0, 0, 1, 1)}, {"b", {{{0, 0}, {1, 0}}}}}},
+                  {rectangle(0, 0, 10, 10),
+                   {},
+                   {{"a", rectangle(0, 0, 1, 1)}, {"b", {{{0, 0}, {1, 0}}}}}},
                   "domain.zones[1]",
                   "3 vertices"}),
     [](const auto& p) { return std::string(p.param.name); });

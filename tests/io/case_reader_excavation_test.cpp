@@ -7,10 +7,12 @@
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/model/model.hpp>
 
+#include "support/read_error.hpp"
+
 namespace bimrock {
 namespace {
 
-const std::string kBase = R"(schema: 1
+const std::string kSixBlockCase = R"(schema: 1
 materials:
   rock: {E: 10.0e9, nu: 0.2, unit_weight: 26.0e3}
   shotcrete: {E: 20.0e9, nu: 0.2, unit_weight: 24.0e3}
@@ -30,14 +32,7 @@ supports:
 
 const std::string kOneStage = "stages:\n  - {name: in situ, loads: {gravity: [0, -1]}}\n";
 
-std::string error_of(const std::string& text) {
-  try {
-    read_case_string(text, "case.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::read_error_of;
 
 // Reads and builds: the builder's checks, with the reader's lines and items.
 std::string build_error_of(const std::string& text) {
@@ -50,7 +45,7 @@ std::string build_error_of(const std::string& text) {
 }
 
 TEST(CaseReaderExcavation, ReadsTheInitialStress) {
-  const Case c = read_case_string(kBase + R"(initial_stress:
+  const Case c = read_case_string(kSixBlockCase + R"(initial_stress:
   stress: [-1.0e6, -2.0e6, 0.5e6]
   gravity: {ground_level: 120.0, unit_weight: 26.0e3, k0: 0.5}
   allow_yield: true
@@ -70,35 +65,36 @@ TEST(CaseReaderExcavation, ReadsTheInitialStress) {
 
 TEST(CaseReaderExcavation, InitialStressDefaultsToNoUniformPartAndNoYield) {
   const Case gravity_only = read_case_string(
-      kBase + "initial_stress: {gravity: {ground_level: 2, unit_weight: 1.0e4, k0: 0}}\n" +
+      kSixBlockCase + "initial_stress: {gravity: {ground_level: 2, unit_weight: 1.0e4, k0: 0}}\n" +
           kOneStage,
       "case.yaml");
   EXPECT_EQ(gravity_only.spec.initial_stress->uniform, Eigen::Vector3d::Zero());
   EXPECT_EQ(gravity_only.spec.initial_stress->gravity->k0, 0.0);
   EXPECT_FALSE(gravity_only.spec.initial_stress->allow_yield);
   const Case stress_only = read_case_string(
-      kBase + "initial_stress: {stress: [0, -1.0e5, 0]}\n" + kOneStage, "case.yaml");
+      kSixBlockCase + "initial_stress: {stress: [0, -1.0e5, 0]}\n" + kOneStage, "case.yaml");
   EXPECT_FALSE(stress_only.spec.initial_stress->gravity.has_value());
   EXPECT_EQ(stress_only.spec.initial_stress->uniform, Eigen::Vector3d(0, -1e5, 0));
-  EXPECT_FALSE(read_case_string(kBase + kOneStage, "case.yaml").spec.initial_stress);
+  EXPECT_FALSE(read_case_string(kSixBlockCase + kOneStage, "case.yaml").spec.initial_stress);
 }
 
 TEST(CaseReaderExcavation, RejectsAnInitialStressWithoutStages) {
-  EXPECT_EQ(error_of(kBase + "loads: {gravity: [0, -1]}\ninitial_stress: {stress: [0, -1, 0]}\n"),
+  EXPECT_EQ(read_error_of(kSixBlockCase +
+                          "loads: {gravity: [0, -1]}\ninitial_stress: {stress: [0, -1, 0]}\n"),
             "case.yaml:18: initial_stress: is the stress in the rock before the first stage: "
             "give stages (an elastic analysis, with loads, starts unstressed)");
 }
 
 struct BadInput {
   const char* name;
-  std::string text;      // appended to kBase
+  std::string text;      // appended to kSixBlockCase
   std::string expected;  // the whole message
 };
 
 class BadInitialStress : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadInitialStress, IsNamedByFileLineAndItem) {
-  EXPECT_EQ(error_of(kBase + GetParam().text + kOneStage), GetParam().expected);
+  EXPECT_EQ(read_error_of(kSixBlockCase + GetParam().text + kOneStage), GetParam().expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -144,7 +140,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& test) { return std::string(test.param.name); });
 
 TEST(CaseReaderExcavation, ReadsEachKindOfBlockSelectorAndTheRelease) {
-  const Case c = read_case_string(kBase + R"(stages:
+  const Case c = read_case_string(kSixBlockCase + R"(stages:
   - name: in situ
   - name: top heading
     excavate: {region: [[0.5, 1], [2.5, 1], [1.5, 2.5]]}
@@ -182,7 +178,7 @@ TEST(CaseReaderExcavation, ReadsEachKindOfBlockSelectorAndTheRelease) {
 class BadStage : public ::testing::TestWithParam<BadInput> {};
 
 TEST_P(BadStage, IsNamedByFileLineAndItem) {
-  EXPECT_EQ(error_of(kBase + "stages:\n" + GetParam().text), GetParam().expected);
+  EXPECT_EQ(read_error_of(kSixBlockCase + "stages:\n" + GetParam().text), GetParam().expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -237,7 +233,7 @@ INSTANTIATE_TEST_SUITE_P(
 // release is allowed on the excavating stage and on every later one, whether or not they
 // excavate (it applies to the forces not yet released).
 TEST(CaseReaderExcavation, AcceptsAReleaseFromTheFirstExcavationOn) {
-  const Case c = read_case_string(kBase + R"(stages:
+  const Case c = read_case_string(kSixBlockCase + R"(stages:
   - name: in situ
   - name: excavate
     excavate: {blocks: [4]}
@@ -252,7 +248,7 @@ TEST(CaseReaderExcavation, AcceptsAReleaseFromTheFirstExcavationOn) {
 
 // The builder's checks come out with the reader's file, line and item.
 TEST(CaseReaderExcavation, BuildResolvesTheSelectorsFromTheCaseFile) {
-  const Model m = build_model(read_case_string(kBase + R"(stages:
+  const Model m = build_model(read_case_string(kSixBlockCase + R"(stages:
   - name: in situ
   - name: top heading
     excavate: {region: [[0.5, 1], [2.5, 1], [1.5, 2.5]]}
@@ -269,7 +265,7 @@ TEST(CaseReaderExcavation, BuildResolvesTheSelectorsFromTheCaseFile) {
 }
 
 TEST(CaseReaderExcavation, BuildErrorsNameTheLineAndItem) {
-  EXPECT_EQ(build_error_of(kBase + R"(stages:
+  EXPECT_EQ(build_error_of(kSixBlockCase + R"(stages:
   - name: excavate
     excavate: {blocks: [4]}
   - name: again
@@ -277,13 +273,14 @@ TEST(CaseReaderExcavation, BuildErrorsNameTheLineAndItem) {
 )"),
             "case.yaml:21: stages[1].excavate.box: block 4 (centroid (1.5, 1.5)) is absent at this "
             "stage: excavated by stages[0] ('excavate')");
-  EXPECT_EQ(build_error_of(kBase + "stages:\n  - name: s\n    install: {blocks: [6]}\n"),
+  EXPECT_EQ(build_error_of(kSixBlockCase + "stages:\n  - name: s\n    install: {blocks: [6]}\n"),
             "case.yaml:19: stages[0].install.blocks: there is no block 6: the model's 6 blocks "
             "are numbered from 0 to 5");
-  EXPECT_EQ(build_error_of(kBase + "stages:\n  - name: s\n    excavate: {material: granite}\n"),
-            "case.yaml:19: stages[0].excavate.material: unknown material 'granite'");
-  EXPECT_EQ(build_error_of(kBase + "stages:\n  - name: s\n    excavate: "
-                                   "{region: [[0, 0], [3, 2], [3, 0], [0, 2]]}\n"),
+  EXPECT_EQ(
+      build_error_of(kSixBlockCase + "stages:\n  - name: s\n    excavate: {material: granite}\n"),
+      "case.yaml:19: stages[0].excavate.material: unknown material 'granite'");
+  EXPECT_EQ(build_error_of(kSixBlockCase + "stages:\n  - name: s\n    excavate: "
+                                           "{region: [[0, 0], [3, 2], [3, 0], [0, 2]]}\n"),
             "case.yaml:19: stages[0].excavate.region: the outline intersects itself: edges 1 and "
             "3 cross or touch");
 }

@@ -6,10 +6,12 @@
 
 #include <bimrock/io/case_reader.hpp>
 
+#include "support/read_error.hpp"
+
 namespace bimrock {
 namespace {
 
-const std::string kBase = R"(schema: 1
+const std::string kStrengthCase = R"(schema: 1
 materials:
   rock: {E: 10.0e9, nu: 0.2, strength: {cohesion: 1.0e6, friction: 30, planes: 12}}
   clay: {E: 1.0e9, nu: 0.3, strength: {criterion: tresca, cohesion: 5.0e4}}
@@ -22,17 +24,10 @@ monitors:
   - {name: A, at: [1, 1]}
 )";
 
-std::string error_of(const std::string& text) {
-  try {
-    read_case_string(text, "case.yaml");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+using testing::read_error_of;
 
 TEST(CaseReaderStages, ReadsJointAndBlockStrengthInDegrees) {
-  const Case c = read_case_string(kBase, "case.yaml");
+  const Case c = read_case_string(kStrengthCase, "case.yaml");
   const BlockMaterial& rock = c.spec.block_materials[0];
   ASSERT_TRUE(rock.strength.has_value());
   EXPECT_DOUBLE_EQ(rock.strength->cohesion, 1e6);
@@ -50,7 +45,7 @@ TEST(CaseReaderStages, ReadsJointAndBlockStrengthInDegrees) {
 }
 
 TEST(CaseReaderStages, ReadsStagesWithLoadAndDisplacementControl) {
-  const Case c = read_case_string(kBase + R"(stages:
+  const Case c = read_case_string(kStrengthCase + R"(stages:
   - name: gravity
     loads: {gravity: [0, -1]}
   - name: push
@@ -68,28 +63,28 @@ TEST(CaseReaderStages, ReadsStagesWithLoadAndDisplacementControl) {
   ASSERT_TRUE(c.spec.stages[1].control.has_value());
   EXPECT_EQ(c.spec.stages[1].control->monitor, "A");
   EXPECT_DOUBLE_EQ(c.spec.stages[1].control->displacement, 0.01);
-  EXPECT_EQ(c.spec.stages[1].source.line, 15);  // kBase is 11 lines
+  EXPECT_EQ(c.spec.stages[1].source.line, 15);  // kStrengthCase is 11 lines
 }
 
 TEST(CaseReaderStages, RejectsLoadsAndStagesTogether) {
-  EXPECT_NE(error_of(kBase + "loads: {gravity: [0, -1]}\nstages:\n  - {name: s}\n")
+  EXPECT_NE(read_error_of(kStrengthCase + "loads: {gravity: [0, -1]}\nstages:\n  - {name: s}\n")
                 .find("case.yaml:12: loads: give loads either here"),
             std::string::npos);
 }
 
 TEST(CaseReaderStages, RejectsAResidualWithoutASofteningDistance) {
-  std::string text = kBase;
+  std::string text = kStrengthCase;
   text.replace(text.find(", softening_slip: 0.01"), 21, "");
-  EXPECT_NE(error_of(text).find("residual_cohesion: needs softening_slip"), std::string::npos)
-      << error_of(text);
+  EXPECT_NE(read_error_of(text).find("residual_cohesion: needs softening_slip"), std::string::npos)
+      << read_error_of(text);
 }
 
 TEST(CaseReaderStages, RejectsAFrictionAngleOf90Degrees) {
-  std::string text = kBase;
+  std::string text = kStrengthCase;
   text.replace(text.find("friction: 30, dilation"), 12, "friction: 90");
-  EXPECT_NE(error_of(text).find("joint_materials.joint.friction: must be an angle"),
+  EXPECT_NE(read_error_of(text).find("joint_materials.joint.friction: must be an angle"),
             std::string::npos)
-      << error_of(text);
+      << read_error_of(text);
 }
 
 TEST(CaseReaderStages, RejectsStrengthOnAContinuumInterface) {
@@ -101,16 +96,16 @@ joint_materials:
 blocks:
   - {material: rock, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
 )";
-  EXPECT_NE(error_of(text).find(
+  EXPECT_NE(read_error_of(text).find(
                 "case.yaml:5: joint_materials.glue: a continuum interface has no strength"),
             std::string::npos)
-      << error_of(text);
+      << read_error_of(text);
 }
 
 TEST(CaseReaderStages, RejectsAnUnknownControlKey) {
   EXPECT_NE(
-      error_of(
-          kBase +
+      read_error_of(
+          kStrengthCase +
           "stages:\n  - name: s\n    control: {monitor: A, direction: [1, 0], displacment: 1}\n")
           .find("case.yaml:14:"),
       std::string::npos);

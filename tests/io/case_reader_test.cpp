@@ -68,13 +68,13 @@ blocks:
   - {material: rock, vertices: [[0, 0], [1, 0], [1, 1], [0, 1]]}
 )";
 
-struct Failure {
+struct ReadFailure {
   int line = -1;
   std::string item;
   std::string message;
 };
 
-Failure error_of(const std::string& text) {
+ReadFailure read_failure_of(const std::string& text) {
   try {
     read_case_string(text, "case.yaml");
   } catch (const InputError& e) {
@@ -136,12 +136,12 @@ stages: [{name: gravity, loads: {gravity: [0, -1]}}]
   EXPECT_EQ(f.selection.joint_materials[1], 0);  // glue
   EXPECT_EQ(f.selection.block_materials, std::vector<char>(1, 0));
 
-  const Failure elastic = error_of(base + "factor_of_safety: {materials: [glue]}\n");
+  const ReadFailure elastic = read_failure_of(base + "factor_of_safety: {materials: [glue]}\n");
   EXPECT_EQ(elastic.item, "factor_of_safety.materials[0]");
   EXPECT_NE(elastic.message.find("no strength"), std::string::npos) << elastic.message;
-  const Failure unknown = error_of(base + "factor_of_safety: {materials: [granite]}\n");
+  const ReadFailure unknown = read_failure_of(base + "factor_of_safety: {materials: [granite]}\n");
   EXPECT_NE(unknown.message.find("neither a material nor a joint material"), std::string::npos);
-  const Failure without_stages = error_of(kMinimal + "factor_of_safety: {}\n");
+  const ReadFailure without_stages = read_failure_of(kMinimal + "factor_of_safety: {}\n");
   EXPECT_EQ(without_stages.item, "factor_of_safety");
 }
 
@@ -153,7 +153,7 @@ TEST(CaseReader, ASeismicLoadAddsItsCoefficientsToTheBodyForce) {
   const Vec2 g = c.spec.stages.at(0).loads.gravity;
   EXPECT_DOUBLE_EQ(g.x(), 0.15);
   EXPECT_DOUBLE_EQ(g.y(), -1.0 + 0.05);  // kv < 0 acts upwards
-  const Failure f = error_of(kMinimal + "loads: {seismic: {kh: 3}}\n");
+  const ReadFailure f = read_failure_of(kMinimal + "loads: {seismic: {kh: 3}}\n");
   EXPECT_EQ(f.item, "loads.seismic.kh");
 }
 
@@ -197,7 +197,7 @@ TEST(CaseReaderErrors, BadWaterIsRejectedByItem) {
        "loads.water.lines[0].depth", ""},
   };
   for (const auto& w : cases) {
-    const Failure f = error_of(kMinimal + "loads:\n  water: " + w.water + "\n");
+    const ReadFailure f = read_failure_of(kMinimal + "loads:\n  water: " + w.water + "\n");
     EXPECT_EQ(f.line, 9) << w.water;
     EXPECT_EQ(f.item, w.item) << w.water << ": " << f.message;
     EXPECT_NE(f.message.find(w.message), std::string::npos) << f.message;
@@ -205,10 +205,10 @@ TEST(CaseReaderErrors, BadWaterIsRejectedByItem) {
 }
 
 TEST(CaseReaderErrors, PlasticAnalysisOptionsOutOfRangeAreRejected) {
-  const Failure wide = error_of(kMinimal + "analysis: {bracket_tolerance: 0.6}\n");
+  const ReadFailure wide = read_failure_of(kMinimal + "analysis: {bracket_tolerance: 0.6}\n");
   EXPECT_EQ(wide.item, "analysis.bracket_tolerance");
   EXPECT_NE(wide.message.find("at most 0.5"), std::string::npos) << wide.message;
-  const Failure none = error_of(kMinimal + "analysis: {max_bisections: 0}\n");
+  const ReadFailure none = read_failure_of(kMinimal + "analysis: {max_bisections: 0}\n");
   EXPECT_EQ(none.item, "analysis.max_bisections");
   EXPECT_NE(none.message.find("from 1 to 200"), std::string::npos) << none.message;
 }
@@ -390,14 +390,15 @@ TEST(CaseReader, ReadsTheExampleCaseFiles) {
 // ---- Bad input: each names its line and item ---------------------------------------------------
 
 TEST(CaseReaderErrors, MalformedYamlGivesTheParserLine) {
-  const Failure f = error_of("schema: 1\nmaterials:\n  rock: {E: 10.0e9, nu: 0.2\nblocks: []\n");
+  const ReadFailure f =
+      read_failure_of("schema: 1\nmaterials:\n  rock: {E: 10.0e9, nu: 0.2\nblocks: []\n");
   EXPECT_EQ(f.line, 4);
   EXPECT_EQ(f.item, "");
   EXPECT_THAT(f.message, HasSubstr("malformed YAML"));
 }
 
 TEST(CaseReaderErrors, MissingSchemaNamesTheFirstKey) {
-  const Failure f = error_of(kMinimal.substr(std::string("schema: 1\n").size()));
+  const ReadFailure f = read_failure_of(kMinimal.substr(std::string("schema: 1\n").size()));
   EXPECT_EQ(f.line, 1);
   EXPECT_EQ(f.item, "schema");
   EXPECT_THAT(f.message, HasSubstr("'schema: 1'"));
@@ -405,30 +406,30 @@ TEST(CaseReaderErrors, MissingSchemaNamesTheFirstKey) {
 }
 
 TEST(CaseReaderErrors, SchemaThatIsNotTheFirstKeyIsRejected) {
-  const Failure f = error_of("title: x\nschema: 1\n");
+  const ReadFailure f = read_failure_of("title: x\nschema: 1\n");
   EXPECT_EQ(f.line, 2);
   EXPECT_EQ(f.item, "schema");
   EXPECT_THAT(f.message, HasSubstr("first key"));
 }
 
 TEST(CaseReaderErrors, SchemaOtherThanTheInteger1IsRejected) {
-  Failure f = error_of("schema: 2\n");
+  ReadFailure f = read_failure_of("schema: 2\n");
   EXPECT_EQ(f.line, 1);
   EXPECT_EQ(f.item, "schema");
   EXPECT_THAT(f.message, HasSubstr("unsupported version 2"));
-  f = error_of("schema: 1.0\n");
+  f = read_failure_of("schema: 1.0\n");
   EXPECT_EQ(f.item, "schema");
   EXPECT_THAT(f.message, HasSubstr("whole number"));
 }
 
 TEST(CaseReaderErrors, EmptyFileIsRejected) {
-  const Failure f = error_of("# nothing but a comment\n");
+  const ReadFailure f = read_failure_of("# nothing but a comment\n");
   EXPECT_EQ(f.line, 0);
   EXPECT_THAT(f.message, HasSubstr("empty"));
 }
 
 TEST(CaseReaderErrors, UnknownTopLevelKeyIsNamedWithItsLine) {
-  const Failure f = error_of(kMinimal + "matrials: {}\n");
+  const ReadFailure f = read_failure_of(kMinimal + "matrials: {}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "matrials");
   EXPECT_THAT(f.message, HasSubstr("unknown key 'matrials'"));
@@ -436,55 +437,58 @@ TEST(CaseReaderErrors, UnknownTopLevelKeyIsNamedWithItsLine) {
 }
 
 TEST(CaseReaderErrors, UnknownNestedKeyIsNamedWithItsLine) {
-  Failure f = error_of(kMinimal + "  - {material: rock, vertixes: [[1, 0], [2, 0], [2, 1]]}\n");
+  ReadFailure f =
+      read_failure_of(kMinimal + "  - {material: rock, vertixes: [[1, 0], [2, 0], [2, 1]]}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "blocks[1].vertixes");
   EXPECT_THAT(f.message, HasSubstr("unknown key 'vertixes' (allowed here: material, vertices)"));
-  f = error_of(kMinimal + "analysis:\n  plane: strain\n  thicknes: 2\n");
+  f = read_failure_of(kMinimal + "analysis:\n  plane: strain\n  thicknes: 2\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_EQ(f.item, "analysis.thicknes");
 }
 
 TEST(CaseReaderErrors, OrientationIsUnknownInASupport) {
-  const Failure f = error_of(kMinimal + "supports:\n  - {orientation: 0}\n");
+  const ReadFailure f = read_failure_of(kMinimal + "supports:\n  - {orientation: 0}\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_EQ(f.item, "supports[0].orientation");
   EXPECT_THAT(f.message, HasSubstr("unknown key"));
 }
 
 TEST(CaseReaderErrors, DuplicateKeyIsRejectedWithBothLines) {
-  Failure f = error_of(kMinimal + "materials:\n  other: {E: 1.0e9, nu: 0.2}\n");
+  ReadFailure f = read_failure_of(kMinimal + "materials:\n  other: {E: 1.0e9, nu: 0.2}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "materials");
   EXPECT_THAT(f.message, HasSubstr("given twice (first on line 2)"));
-  f = error_of(kMinimal + "joints: {default: joint, default: joint}\n");
+  f = read_failure_of(kMinimal + "joints: {default: joint, default: joint}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "joints.default");
   // A material name given twice is a repeated key too.
-  f = error_of("schema: 1\nmaterials:\n  rock: {E: 1.0e9, nu: 0.2}\n  rock: {E: 2.0e9, nu: 0.2}\n");
+  f = read_failure_of(
+      "schema: 1\nmaterials:\n  rock: {E: 1.0e9, nu: 0.2}\n  rock: {E: 2.0e9, nu: 0.2}\n");
   EXPECT_EQ(f.line, 4);
   EXPECT_EQ(f.item, "materials.rock");
 }
 
 TEST(CaseReaderErrors, MissingRequiredKeyIsNamedAtItsMap) {
-  Failure f = error_of(kMinimal + "  - {vertices: [[1, 0], [2, 0], [2, 1]]}\n");
+  ReadFailure f = read_failure_of(kMinimal + "  - {vertices: [[1, 0], [2, 0], [2, 1]]}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "blocks[1].material");
   EXPECT_THAT(f.message, HasSubstr("required key 'material' is missing"));
-  f = error_of("schema: 1\nmaterials:\n  rock:\n    nu: 0.2\n");
+  f = read_failure_of("schema: 1\nmaterials:\n  rock:\n    nu: 0.2\n");
   EXPECT_EQ(f.line, 3);
   EXPECT_EQ(f.item, "materials.rock.E");
-  f = error_of(kMinimal + "loads:\n  tractions:\n    - {line: [[0, 1], [1, 1]], shear: 1}\n");
+  f = read_failure_of(kMinimal +
+                      "loads:\n  tractions:\n    - {line: [[0, 1], [1, 1]], shear: 1}\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_EQ(f.item, "loads.tractions[0].normal");
 }
 
 TEST(CaseReaderErrors, MissingRequiredSectionIsReportedAfterErrorsInsideSections) {
-  Failure f = error_of("schema: 1\nmaterials:\n  rock: {E: 10.0e9, nu: 0.2}\n");
+  ReadFailure f = read_failure_of("schema: 1\nmaterials:\n  rock: {E: 10.0e9, nu: 0.2}\n");
   EXPECT_EQ(f.line, 0);
   EXPECT_EQ(f.item, "blocks");
   // The NaN on line 5 comes first, though blocks are missing too.
-  f = error_of(
+  f = read_failure_of(
       "schema: 1\nmaterials:\n  rock: {E: 10.0e9, nu: 0.2}\njoint_materials:\n"
       "  joint: {kn: .nan, ks: 1.0e10}\n");
   EXPECT_EQ(f.line, 5);
@@ -492,181 +496,184 @@ TEST(CaseReaderErrors, MissingRequiredSectionIsReportedAfterErrorsInsideSections
 }
 
 TEST(CaseReaderErrors, WrongTypesAreRejected) {
-  Failure f = error_of("schema: 1\nmaterials:\n  rock: {E: ten, nu: 0.2}\n");
+  ReadFailure f = read_failure_of("schema: 1\nmaterials:\n  rock: {E: ten, nu: 0.2}\n");
   EXPECT_EQ(f.line, 3);
   EXPECT_EQ(f.item, "materials.rock.E");
   EXPECT_THAT(f.message, HasSubstr("must be a number, not 'ten'"));
   // A quoted number is a string in YAML.
-  f = error_of("schema: 1\nmaterials:\n  rock: {E: \"10\", nu: 0.2}\n");
+  f = read_failure_of("schema: 1\nmaterials:\n  rock: {E: \"10\", nu: 0.2}\n");
   EXPECT_EQ(f.item, "materials.rock.E");
   EXPECT_THAT(f.message, HasSubstr("string"));
   // A point that is not a list of two numbers.
-  f = error_of(kMinimal + "  - {material: rock, vertices: [[1, 0], [2, 0, 0], [2, 1]]}\n");
+  f = read_failure_of(kMinimal + "  - {material: rock, vertices: [[1, 0], [2, 0, 0], [2, 1]]}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "blocks[1].vertices[1]");
   EXPECT_THAT(f.message, HasSubstr("point [x, y]"));
   // A map where a list is expected.
-  f = error_of(kMinimal + "supports: {line: [[0, 0], [1, 0]]}\n");
+  f = read_failure_of(kMinimal + "supports: {line: [[0, 0], [1, 0]]}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "supports");
   EXPECT_THAT(f.message, HasSubstr("must be a list"));
   // A list where a map is expected.
-  f = error_of(kMinimal + "analysis: [strain]\n");
+  f = read_failure_of(kMinimal + "analysis: [strain]\n");
   EXPECT_EQ(f.item, "analysis");
   EXPECT_THAT(f.message, HasSubstr("must be a map"));
   // A value left out.
-  f = error_of(kMinimal + "analysis:\n  thickness:\n");
+  f = read_failure_of(kMinimal + "analysis:\n  thickness:\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_EQ(f.item, "analysis.thickness");
   EXPECT_THAT(f.message, HasSubstr("missing"));
   // Not a boolean.
-  f = error_of(kMinimal + "output: {vtk: 2}\n");
+  f = read_failure_of(kMinimal + "output: {vtk: 2}\n");
   EXPECT_EQ(f.item, "output.vtk");
   EXPECT_THAT(f.message, HasSubstr("true or false"));
   // A segment that is not two points.
-  f = error_of(kMinimal + "supports:\n  - {line: [[0, 0], [1, 0], [2, 0]]}\n");
+  f = read_failure_of(kMinimal + "supports:\n  - {line: [[0, 0], [1, 0], [2, 0]]}\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_EQ(f.item, "supports[0].line");
 }
 
 TEST(CaseReaderErrors, NaNIsNotAFiniteNumber) {
-  const Failure f = error_of("schema: 1\nmaterials:\n  rock: {E: 10.0e9, nu: .nan}\n");
+  const ReadFailure f = read_failure_of("schema: 1\nmaterials:\n  rock: {E: 10.0e9, nu: .nan}\n");
   EXPECT_EQ(f.line, 3);
   EXPECT_EQ(f.item, "materials.rock.nu");
   EXPECT_THAT(f.message, HasSubstr("must be a finite number"));
 }
 
 TEST(CaseReaderErrors, InfinityIsNotAFiniteNumber) {
-  Failure f = error_of(kMinimal + "loads:\n  gravity: [0, -.inf]\n");
+  ReadFailure f = read_failure_of(kMinimal + "loads:\n  gravity: [0, -.inf]\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_EQ(f.item, "loads.gravity[1]");
   EXPECT_THAT(f.message, HasSubstr("must be a finite number"));
-  f = error_of("schema: 1\nmaterials:\n  rock: {E: .inf, nu: 0.2}\n");
+  f = read_failure_of("schema: 1\nmaterials:\n  rock: {E: .inf, nu: 0.2}\n");
   EXPECT_EQ(f.item, "materials.rock.E");
   EXPECT_THAT(f.message, HasSubstr("must be a finite number"));
 }
 
 TEST(CaseReaderErrors, UnknownEnumValuesListTheAllowedOnes) {
-  Failure f = error_of(kMinimal + "analysis: {plane: strian}\n");
+  ReadFailure f = read_failure_of(kMinimal + "analysis: {plane: strian}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "analysis.plane");
   EXPECT_THAT(f.message, HasSubstr("unknown value 'strian' (allowed: strain, stress)"));
-  f = error_of(kMinimal + "supports:\n  - {line: [[0, 0], [1, 0]], type: pinned}\n");
+  f = read_failure_of(kMinimal + "supports:\n  - {line: [[0, 0], [1, 0]], type: pinned}\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_EQ(f.item, "supports[0].type");
   EXPECT_THAT(f.message, HasSubstr("allowed: fixed, roller"));
-  f = error_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, integration: simpson}\n");
+  f = read_failure_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, integration: simpson}\n");
   EXPECT_EQ(f.line, 3);
   EXPECT_EQ(f.item, "joint_materials.j.integration");
   EXPECT_THAT(f.message, HasSubstr("allowed: lobatto, gauss"));
 }
 
 TEST(CaseReaderErrors, SelectorWithTwoKindsIsRejected) {
-  Failure f = error_of(kMinimal +
-                       "joints:\n  rules:\n    - {material: joint, orientation: 0, "
-                       "line: [[0, 0], [1, 0]]}\n");
+  ReadFailure f = read_failure_of(kMinimal +
+                                  "joints:\n  rules:\n    - {material: joint, orientation: 0, "
+                                  "line: [[0, 0], [1, 0]]}\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_EQ(f.item, "joints.rules[0]");
   EXPECT_THAT(f.message, HasSubstr("only one of line, box, orientation or group"));
-  f = error_of(kMinimal + "supports:\n  - {line: [[0, 0], [1, 0]], box: [[0, 0], [1, 1]]}\n");
+  f = read_failure_of(kMinimal +
+                      "supports:\n  - {line: [[0, 0], [1, 0]], box: [[0, 0], [1, 1]]}\n");
   EXPECT_EQ(f.item, "supports[0]");
   EXPECT_THAT(f.message, HasSubstr("only one of line, box or group"));
 }
 
 TEST(CaseReaderErrors, SelectorWithNoKindIsRejected) {
-  const Failure f = error_of(kMinimal + "supports:\n  - {type: roller}\n");
+  const ReadFailure f = read_failure_of(kMinimal + "supports:\n  - {type: roller}\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_EQ(f.item, "supports[0]");
   EXPECT_THAT(f.message, HasSubstr("give one of line, box or group"));
 }
 
 TEST(CaseReaderErrors, BoxWithCornersSwappedIsRejected) {
-  const Failure f = error_of(kMinimal +
-                             "loads:\n  tractions:\n    - {box: [[1, 1], [0, 0]], "
-                             "normal: 1}\n");
+  const ReadFailure f = read_failure_of(kMinimal +
+                                        "loads:\n  tractions:\n    - {box: [[1, 1], [0, 0]], "
+                                        "normal: 1}\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_EQ(f.item, "loads.tractions[0].box");
   EXPECT_THAT(f.message, HasSubstr("lower-left"));
 }
 
 TEST(CaseReaderErrors, ToleranceWithoutOrientationIsRejected) {
-  const Failure f = error_of(kMinimal +
-                             "joints:\n  rules:\n    - {material: joint, line: "
-                             "[[0, 0], [1, 0]], tolerance: 2}\n");
+  const ReadFailure f = read_failure_of(kMinimal +
+                                        "joints:\n  rules:\n    - {material: joint, line: "
+                                        "[[0, 0], [1, 0]], tolerance: 2}\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_EQ(f.item, "joints.rules[0].tolerance");
 }
 
 TEST(CaseReaderErrors, ThicknessMustBePositive) {
-  Failure f = error_of(kMinimal + "analysis: {thickness: 0}\n");
+  ReadFailure f = read_failure_of(kMinimal + "analysis: {thickness: 0}\n");
   EXPECT_EQ(f.line, 8);
   EXPECT_EQ(f.item, "analysis.thickness");
   EXPECT_THAT(f.message, HasSubstr("must be positive"));
-  f = error_of(kMinimal + "analysis: {thickness: -1.0}\n");
+  f = read_failure_of(kMinimal + "analysis: {thickness: -1.0}\n");
   EXPECT_EQ(f.item, "analysis.thickness");
 }
 
 TEST(CaseReaderErrors, SubdivisionsMustBeAWholeNumberOfAtLeastOne) {
-  Failure f = error_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, subdivisions: 0}\n");
+  ReadFailure f =
+      read_failure_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, subdivisions: 0}\n");
   EXPECT_EQ(f.line, 3);
   EXPECT_EQ(f.item, "joint_materials.j.subdivisions");
   EXPECT_THAT(f.message, HasSubstr("at least 1"));
-  f = error_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, subdivisions: 2.5}\n");
+  f = read_failure_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, subdivisions: 2.5}\n");
   EXPECT_EQ(f.item, "joint_materials.j.subdivisions");
   EXPECT_THAT(f.message, HasSubstr("whole number"));
 }
 
 TEST(CaseReaderErrors, JointMaterialMixingFormsIsRejected) {
-  Failure f = error_of("schema: 1\njoint_materials:\n  j: {kn: 1.0e10, ks: 1.0e10, E: 1.0e9}\n");
+  ReadFailure f =
+      read_failure_of("schema: 1\njoint_materials:\n  j: {kn: 1.0e10, ks: 1.0e10, E: 1.0e9}\n");
   EXPECT_EQ(f.line, 3);
   EXPECT_EQ(f.item, "joint_materials.j");
   EXPECT_THAT(f.message, HasSubstr("mixes forms"));
-  f = error_of("schema: 1\njoint_materials:\n  j: {continuum: true, kn: 1.0e10}\n");
+  f = read_failure_of("schema: 1\njoint_materials:\n  j: {continuum: true, kn: 1.0e10}\n");
   EXPECT_EQ(f.item, "joint_materials.j");
   EXPECT_THAT(f.message, HasSubstr("mixes forms"));
 }
 
 TEST(CaseReaderErrors, JointMaterialOfNoFormOrIncompleteFormIsRejected) {
-  Failure f = error_of("schema: 1\njoint_materials:\n  j: {subdivisions: 2}\n");
+  ReadFailure f = read_failure_of("schema: 1\njoint_materials:\n  j: {subdivisions: 2}\n");
   EXPECT_EQ(f.line, 3);
   EXPECT_EQ(f.item, "joint_materials.j");
   EXPECT_THAT(f.message, HasSubstr("give kn and ks"));
-  f = error_of("schema: 1\njoint_materials:\n  j: {kn: 1.0e10}\n");
+  f = read_failure_of("schema: 1\njoint_materials:\n  j: {kn: 1.0e10}\n");
   EXPECT_EQ(f.item, "joint_materials.j.ks");
-  f = error_of("schema: 1\njoint_materials:\n  j: {E: 1.0e9, nu: 0.2, h: 0}\n");
+  f = read_failure_of("schema: 1\njoint_materials:\n  j: {E: 1.0e9, nu: 0.2, h: 0}\n");
   EXPECT_EQ(f.item, "joint_materials.j.h");
   EXPECT_THAT(f.message, HasSubstr("must be positive"));
-  f = error_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, penalty_factor: 10}\n");
+  f = read_failure_of("schema: 1\njoint_materials:\n  j: {kn: 1, ks: 1, penalty_factor: 10}\n");
   EXPECT_EQ(f.item, "joint_materials.j.penalty_factor");
   EXPECT_THAT(f.message, HasSubstr("only to continuum"));
 }
 
 TEST(CaseReaderErrors, EmptyMaterialsOrBlocksAreRejected) {
-  Failure f = error_of("schema: 1\nmaterials: {}\n");
+  ReadFailure f = read_failure_of("schema: 1\nmaterials: {}\n");
   EXPECT_EQ(f.line, 2);
   EXPECT_EQ(f.item, "materials");
-  f = error_of("schema: 1\nmaterials:\n  rock: {E: 1.0e9, nu: 0.2}\nblocks: []\n");
+  f = read_failure_of("schema: 1\nmaterials:\n  rock: {E: 1.0e9, nu: 0.2}\nblocks: []\n");
   EXPECT_EQ(f.line, 4);
   EXPECT_EQ(f.item, "blocks");
 }
 
 TEST(CaseReaderErrors, MonitorNamesMustBeUnique) {
-  const Failure f = error_of(kMinimal +
-                             "monitors:\n  - {name: A, at: [0, 0]}\n"
-                             "  - {name: A, at: [1, 1]}\n");
+  const ReadFailure f = read_failure_of(kMinimal +
+                                        "monitors:\n  - {name: A, at: [0, 0]}\n"
+                                        "  - {name: A, at: [1, 1]}\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_EQ(f.item, "monitors[1].name");
   EXPECT_THAT(f.message, HasSubstr("monitors[0] (line 9)"));
 }
 
 TEST(CaseReaderErrors, MoreThanOneDocumentIsRejected) {
-  const Failure f = error_of(kMinimal + "---\nschema: 1\n");
+  const ReadFailure f = read_failure_of(kMinimal + "---\nschema: 1\n");
   EXPECT_EQ(f.line, 9);
   EXPECT_THAT(f.message, HasSubstr("more than one YAML document"));
 }
 
 TEST(CaseReaderErrors, ASecondDocumentAfterAnEndMarkerIsRejected) {
-  const Failure f = error_of(kMinimal + "...\n# a comment\nschema: 1\n");
+  const ReadFailure f = read_failure_of(kMinimal + "...\n# a comment\nschema: 1\n");
   EXPECT_EQ(f.line, 10);
   EXPECT_THAT(f.message, HasSubstr("more than one YAML document"));
 }
@@ -677,13 +684,13 @@ TEST(CaseReaderErrors, ALeadingDocumentMarkerIsOneDocument) {
 
 TEST(CaseReaderErrors, AFileOfOnlyACommaIsMalformed) {
   // yaml-cpp 0.7's LoadAll never returns on this input; the reader must not call it.
-  const Failure f = error_of("# a comment\n,\n");
+  const ReadFailure f = read_failure_of("# a comment\n,\n");
   EXPECT_EQ(f.line, 2);
   EXPECT_THAT(f.message, HasSubstr("malformed YAML"));
 }
 
 TEST(CaseReaderErrors, TextThatIsNotUtf8IsNamed) {
-  const Failure f = error_of(
+  const ReadFailure f = read_failure_of(
       "schema: 1\ntitle: \"Mauer \xFC"
       "ber Fels\"\n" +
       kMinimal.substr(10));

@@ -12,7 +12,7 @@
 namespace bimrock {
 namespace {
 
-Model grid() {
+Model grid_model() {
   CaseSpec c;
   c.file = "case.yaml";
   BlockMaterial lining = testing::rock(30e9, 0.2);
@@ -63,7 +63,7 @@ BlockSelector list(std::vector<int> blocks) {
   return s;
 }
 
-std::string error_of(const Model& m, const BlockSelector& s) {
+std::string selection_error_of(const Model& m, const BlockSelector& s) {
   try {
     select_blocks(m, s);
   } catch (const InputError& e) {
@@ -75,7 +75,7 @@ std::string error_of(const Model& m, const BlockSelector& s) {
 using Blocks = std::vector<int>;
 
 TEST(BlockSelector, ARegionPicksTheCentroidsInsideEvenWhereItIsNotConvex) {
-  const Model m = grid();
+  const Model m = grid_model();
   // An L: the bottom row and the left half of the top row. Its bounding box holds every
   // centroid, so the polygon itself decides.
   EXPECT_EQ(select_blocks(m, region({{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 2}, {0, 2}})),
@@ -85,7 +85,7 @@ TEST(BlockSelector, ARegionPicksTheCentroidsInsideEvenWhereItIsNotConvex) {
 }
 
 TEST(BlockSelector, ACentroidOnTheBoundaryCountsWithinTheTolerance) {
-  const Model m = grid();  // tolerance 1e-9 times the diagonal sqrt(13): 3.6e-9 m
+  const Model m = grid_model();  // tolerance 1e-9 times the diagonal sqrt(13): 3.6e-9 m
   EXPECT_EQ(select_blocks(m, region({{1.5, 0}, {3, 0}, {3, 1}, {1.5, 1}})), (Blocks{1, 2}));
   EXPECT_EQ(select_blocks(m, region({{1.5 + 1e-9, 0}, {3, 0}, {3, 1}, {1.5 + 1e-9, 1}})),
             (Blocks{1, 2}));
@@ -97,47 +97,47 @@ TEST(BlockSelector, ACentroidOnTheBoundaryCountsWithinTheTolerance) {
 }
 
 TEST(BlockSelector, ABoxPicksTheCentroidsInside) {
-  const Model m = grid();
+  const Model m = grid_model();
   EXPECT_EQ(select_blocks(m, box({1, 0}, {3, 2})), (Blocks{1, 2, 4, 5}));
   EXPECT_EQ(select_blocks(m, box({0.6, 0.6}, {1.4, 1.4})), Blocks{});  // between centroids
 }
 
 TEST(BlockSelector, AMaterialPicksItsBlocks) {
-  const Model m = grid();
+  const Model m = grid_model();
   EXPECT_EQ(select_blocks(m, material("lining")), (Blocks{4, 5}));
   EXPECT_EQ(select_blocks(m, material("rock")), (Blocks{0, 1, 2, 3}));
 }
 
 TEST(BlockSelector, AListIsSortedOnce) {
-  EXPECT_EQ(select_blocks(grid(), list({5, 0, 3, 0})), (Blocks{0, 3, 5}));
+  EXPECT_EQ(select_blocks(grid_model(), list({5, 0, 3, 0})), (Blocks{0, 3, 5}));
 }
 
 TEST(BlockSelector, RejectsWhatSelectsNothingKnownNamingTheItem) {
-  const Model m = grid();
-  EXPECT_EQ(error_of(m, list({2, 6})),
+  const Model m = grid_model();
+  EXPECT_EQ(selection_error_of(m, list({2, 6})),
             "7: stages[1].install.blocks: there is no block 6: the model's 6 blocks are "
             "numbered from 0 to 5");
-  EXPECT_EQ(error_of(m, list({-1})),
+  EXPECT_EQ(selection_error_of(m, list({-1})),
             "7: stages[1].install.blocks: there is no block -1: the model's 6 blocks are "
             "numbered from 0 to 5");
-  EXPECT_EQ(error_of(m, material("granite")),
+  EXPECT_EQ(selection_error_of(m, material("granite")),
             "7: stages[1].install.material: unknown material 'granite'");
-  EXPECT_EQ(error_of(m, box({2, 2}, {1, 1})),
+  EXPECT_EQ(selection_error_of(m, box({2, 2}, {1, 1})),
             "7: stages[1].excavate.box: the first corner must be the lower-left one: [[xmin, "
             "ymin], [xmax, ymax]]");
-  EXPECT_EQ(error_of(m, box({0, 0}, {std::nan(""), 1})),
+  EXPECT_EQ(selection_error_of(m, box({0, 0}, {std::nan(""), 1})),
             "7: stages[1].excavate.box: the box's corners must be finite points");
 }
 
 TEST(BlockSelector, RejectsARegionThatIsNotAnOutline) {
-  const Model m = grid();
-  EXPECT_EQ(error_of(m, region({{0, 0}, {2, 2}, {2, 0}, {0, 2}})),
+  const Model m = grid_model();
+  EXPECT_EQ(selection_error_of(m, region({{0, 0}, {2, 2}, {2, 0}, {0, 2}})),
             "7: stages[1].excavate.region: the outline intersects itself: edges 1 and 3 cross "
             "or touch");
-  EXPECT_EQ(error_of(m, region({{0, 0}, {0, 2}, {2, 2}, {2, 0}})),
+  EXPECT_EQ(selection_error_of(m, region({{0, 0}, {0, 2}, {2, 2}, {2, 0}})),
             "7: stages[1].excavate.region: the vertices are clockwise; list them "
             "counter-clockwise");
-  EXPECT_EQ(error_of(m, region({{0, 0}, {1, 1}})),
+  EXPECT_EQ(selection_error_of(m, region({{0, 0}, {1, 1}})),
             "7: stages[1].excavate.region: a polygon needs at least 3 vertices");
 }
 

@@ -15,7 +15,7 @@
 namespace bimrock {
 namespace {
 
-CaseSpec grid() {
+CaseSpec grid_case() {
   CaseSpec c;
   c.file = "case.yaml";
   BlockMaterial lining = testing::rock(30e9, 0.2, 24e3);
@@ -55,7 +55,7 @@ BlockSelector blocks(std::vector<int> indices, const std::string& item) {
   return s;
 }
 
-BlockSelector box(Vec2 lo, Vec2 hi, const std::string& item) {
+BlockSelector box_selector(Vec2 lo, Vec2 hi, const std::string& item) {
   BlockSelector s;
   s.kind = BlockSelector::Kind::box;
   s.box = BBox{lo, hi};
@@ -63,7 +63,7 @@ BlockSelector box(Vec2 lo, Vec2 hi, const std::string& item) {
   return s;
 }
 
-std::string error_of(const CaseSpec& c) {
+std::string item_error_of(const CaseSpec& c) {
   try {
     build_model(c);
   } catch (const InputError& e) {
@@ -77,9 +77,9 @@ using Present = std::vector<char>;
 // s0 in situ; s1 excavates block 4 (a box), 40% released; s2 installs block 5 (its material);
 // s3 excavates block 3; s4 excavates block 5 again.
 CaseSpec sequence() {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 0).loads.gravity = {0, -1};
-  stage(c, 1).excavate = box({1, 1}, {2, 2}, "stages[1].excavate.box");
+  stage(c, 1).excavate = box_selector({1, 1}, {2, 2}, "stages[1].excavate.box");
   stage(c, 1).release = 0.4;
   BlockSelector lining;
   lining.kind = BlockSelector::Kind::material;
@@ -116,7 +116,7 @@ TEST(StageBlocks, BlocksPresentFollowTheStages) {
 }
 
 TEST(StageBlocks, EveryBlockIsPresentWithoutExcavationOrInstallation) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 0).loads.gravity = {0, -1};
   const Model m = build_model(c);
   EXPECT_EQ(blocks_present(m, -1), Present(6, 1));
@@ -124,137 +124,138 @@ TEST(StageBlocks, EveryBlockIsPresentWithoutExcavationOrInstallation) {
 }
 
 TEST(StageBlocks, RebuildResolvesTheStagesAgain) {
-  const Model built = build_model(grid());
+  const Model built = build_model(grid_case());
   const Model m = rebuild_model(built, sequence());
   EXPECT_EQ(m.stages[1].excavated, std::vector<int>{4});
   EXPECT_EQ(blocks_present(m, 2), (Present{1, 1, 1, 1, 0, 1}));
 }
 
 TEST(StageBlocks, RejectsASelectorThatPicksNoBlock) {
-  CaseSpec c = grid();
-  stage(c, 1).excavate = box({5, 5}, {6, 6}, "stages[1].excavate.box");
-  EXPECT_EQ(error_of(c),
+  CaseSpec c = grid_case();
+  stage(c, 1).excavate = box_selector({5, 5}, {6, 6}, "stages[1].excavate.box");
+  EXPECT_EQ(item_error_of(c),
             "stages[1].excavate.box: selects no block: no block's centroid lies in the box");
 }
 
 TEST(StageBlocks, RejectsExcavatingABlockAlreadyExcavated) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 0).excavate = blocks({4}, "stages[0].excavate.blocks");
-  stage(c, 2).excavate = box({1, 1}, {3, 2}, "stages[2].excavate.box");  // blocks 4 and 5
-  EXPECT_EQ(error_of(c),
+  stage(c, 2).excavate = box_selector({1, 1}, {3, 2}, "stages[2].excavate.box");  // blocks 4 and 5
+  EXPECT_EQ(item_error_of(c),
             "stages[2].excavate.box: block 4 (centroid (1.5, 1.5)) is absent at this stage: "
             "excavated by stages[0] ('s0')");
 }
 
 TEST(StageBlocks, RejectsExcavatingABlockInstalledOnlyLater) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 1).excavate = blocks({2, 5}, "stages[1].excavate.blocks");
   stage(c, 3).install = blocks({5}, "stages[3].install.blocks");
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[1].excavate.blocks: block 5 (centroid (2.5, 1.5)) is absent at this stage: "
             "not installed until stages[3] ('s3'), as a block some stage installs is absent "
             "until then");
 }
 
 TEST(StageBlocks, RejectsInstallingABlockTwice) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 1).install = blocks({5}, "stages[1].install.blocks");
   stage(c, 2).excavate = blocks({5}, "stages[2].excavate.blocks");
   stage(c, 3).install = blocks({4, 5}, "stages[3].install.blocks");
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[3].install.blocks: block 5 (centroid (2.5, 1.5)) is already installed by "
             "stages[1] ('s1'): a block is installed once");
 }
 
 TEST(StageBlocks, RejectsExcavatingAndInstallingTheSameBlockInOneStage) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 1).excavate = blocks({3, 4}, "stages[1].excavate.blocks");
   stage(c, 1).install = blocks({4}, "stages[1].install.blocks");
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[1].install.blocks: block 4 (centroid (1.5, 1.5)) is also excavated by this "
             "stage");
 }
 
 TEST(StageBlocks, RejectsExcavatingEveryBlockPresent) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 0).install = blocks({5}, "stages[0].install.blocks");
   stage(c, 1).excavate = blocks({0, 1, 2, 3, 4, 5}, "stages[1].excavate.blocks");
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[1].excavate.blocks: excavates every block present at this stage: at least "
             "one must remain");
   stage(c, 1).excavate = blocks({0, 1, 2, 3, 4}, "stages[1].excavate.blocks");  // 5 remains
-  EXPECT_EQ(error_of(c), "");
+  EXPECT_EQ(item_error_of(c), "");
 }
 
 TEST(StageBlocks, RejectsAReleaseBeforeAnyExcavationOrOutOfRange) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 0).release = 0.5;
   stage(c, 1).excavate = blocks({4}, "stages[1].excavate.blocks");
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[0].release: no stage up to this one excavates a block: release applies to "
             "the forces of excavated blocks not yet released");
   stage(c, 0).release = 1.0;
   stage(c, 2).release = 0.5;  // after the excavation: the forces not yet released
-  EXPECT_EQ(error_of(c), "");
+  EXPECT_EQ(item_error_of(c), "");
   stage(c, 1).release = 0.0;
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[1].release: must lie in (0, 1]: the fraction of the unreleased excavation "
             "forces released");
   stage(c, 1).release = std::nan("");
-  EXPECT_NE(error_of(c).find("stages[1].release: must lie in (0, 1]"), std::string::npos);
+  EXPECT_NE(item_error_of(c).find("stages[1].release: must lie in (0, 1]"), std::string::npos);
 }
 
 TEST(StageBlocks, RejectsAPointLoadOnAnAbsentBlock) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 1).excavate = blocks({4}, "stages[1].excavate.blocks");
   stage(c, 2).loads.points.push_back({{1.5, 1.5}, {1e3, 0}, {25, "stages[2].loads.points[0]"}});
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[2].loads.points[0]: acts on block 4 (centroid (1.5, 1.5)), which is absent "
             "during this stage: excavated by stages[1] ('s1')");
   // Before block 5 is installed, its point loads have nothing to act on.
-  CaseSpec d = grid();
+  CaseSpec d = grid_case();
   stage(d, 0).loads.points.push_back({{2.5, 1.5}, {1e3, 0}, {5, "stages[0].loads.points[0]"}});
   stage(d, 1).install = blocks({5}, "stages[1].install.blocks");
-  EXPECT_NE(error_of(d).find("stages[0].loads.points[0]: acts on block 5 (centroid (2.5, 1.5)), "
-                             "which is absent during this stage: not installed until stages[1]"),
-            std::string::npos)
-      << error_of(d);
+  EXPECT_NE(
+      item_error_of(d).find("stages[0].loads.points[0]: acts on block 5 (centroid (2.5, 1.5)), "
+                            "which is absent during this stage: not installed until stages[1]"),
+      std::string::npos)
+      << item_error_of(d);
   // In the stage that installs it, it is there.
   d.stages[0].loads.points.clear();
   stage(d, 1).loads.points.push_back({{2.5, 1.5}, {1e3, 0}, {15, "stages[1].loads.points[0]"}});
-  EXPECT_EQ(error_of(d), "");
+  EXPECT_EQ(item_error_of(d), "");
 }
 
 TEST(StageBlocks, RejectsATractionOnAnAbsentBlock) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   stage(c, 1).excavate = blocks({4}, "stages[1].excavate.blocks");
   stage(c, 1).loads.tractions.push_back(
       {testing::on_line({0, 2}, {3, 2}), -1e5, 0.0, {15, "stages[1].loads.tractions[0]"}});
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[1].loads.tractions[0]: acts on an edge of block 4 (centroid (1.5, 1.5)), "
             "which is absent during this stage: excavated by stages[1] ('s1')");
 }
 
 TEST(StageBlocks, MonitorsMayFollowAnAbsentBlockButNotControlIt) {
-  CaseSpec c = grid();  // the monitor "crown" is in block 4
+  CaseSpec c = grid_case();  // the monitor "crown" is in block 4
   stage(c, 1).excavate = blocks({4}, "stages[1].excavate.blocks");
   stage(c, 2).loads.gravity = {0, -1};
-  EXPECT_EQ(error_of(c), "");
+  EXPECT_EQ(item_error_of(c), "");
   stage(c, 2).control = DisplacementControlSpec{"crown", {0, 1}, 0.01, {22, "stages[2].control"}};
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "stages[2].control: monitor 'crown' follows block 4 (centroid (1.5, 1.5)), which is "
             "absent during this stage: excavated by stages[1] ('s1')");
 }
 
 TEST(StageBlocks, CopiesTheInitialStressOfAStagedCaseOnly) {
-  CaseSpec c = grid();
+  CaseSpec c = grid_case();
   InitialStressSpec s;
   s.uniform = {-1e6, -2e6, 0.0};
   s.gravity = InitialStressSpec::Gravity{120.0, 26e3, 0.5};
   s.allow_yield = true;
   s.source = {30, "initial_stress"};
   c.initial_stress = s;
-  EXPECT_EQ(error_of(c),
+  EXPECT_EQ(item_error_of(c),
             "initial_stress: is the stress before the first stage: give stages (an elastic "
             "analysis starts unstressed)");
   stage(c, 0).loads.gravity = {0, -1};
@@ -266,10 +267,10 @@ TEST(StageBlocks, CopiesTheInitialStressOfAStagedCaseOnly) {
   EXPECT_EQ(m.initial_stress->gravity->k0, 0.5);
   EXPECT_TRUE(m.initial_stress->allow_yield);
   c.initial_stress->gravity->unit_weight = 0.0;
-  EXPECT_EQ(error_of(c), "initial_stress.gravity: unit_weight must be positive");
+  EXPECT_EQ(item_error_of(c), "initial_stress.gravity: unit_weight must be positive");
   c.initial_stress->gravity->unit_weight = 26e3;
   c.initial_stress->uniform.x() = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(error_of(c), "initial_stress.stress: must be finite");
+  EXPECT_EQ(item_error_of(c), "initial_stress.stress: must be finite");
 }
 
 }  // namespace

@@ -23,7 +23,7 @@ LcpResult search(const LcpProblem& p) {
   return solver.solve(p);
 }
 
-void expect_solved(const LcpProblem& p, const LcpResult& r) {
+void expect_solved_measured(const LcpProblem& p, const LcpResult& r) {
   ASSERT_EQ(r.status, LcpStatus::solved) << to_string(r.status);
   // Measured here, independently of the solver.
   EXPECT_LE(measure(p, r.z).worst_relative(), 1e-9);
@@ -74,7 +74,7 @@ TEST(BranchAndBoundLcp, SolvesDegenerateCohesionlessLcpsThatLemkeCannot) {
           w(3 * k + r) = 0.0;
     }
     const LcpProblem p{m, testing::planted_q(m, z, w)};
-    expect_solved(p, search(p));
+    expect_solved_measured(p, search(p));
     Lemke lemke;
     lemke_failed += lemke.solve(p).status != LcpStatus::solved ? 1 : 0;
   }
@@ -115,7 +115,7 @@ TEST(BranchAndBoundLcp, AgreesWithEnumerationOnRandomLcps) {
     const std::vector<VectorXd> found = enumerate_lcp_solutions(p);
     const LcpResult r = search(p);
     if (!found.empty()) {
-      expect_solved(p, r);
+      expect_solved_measured(p, r);
       ++solved;
     } else if (r.status == LcpStatus::no_solution) {
       ++unsolvable;
@@ -124,7 +124,7 @@ TEST(BranchAndBoundLcp, AgreesWithEnumerationOnRandomLcps) {
       }
     } else {
       // A solution on a singular basis, which enumeration skips: it must be one.
-      expect_solved(p, r);
+      expect_solved_measured(p, r);
     }
   }
   // Both answers occur in this family (random M are seldom P-matrices).
@@ -135,7 +135,7 @@ TEST(BranchAndBoundLcp, AgreesWithEnumerationOnRandomLcps) {
 TEST(BranchAndBoundLcp, NonNegativeQIsSolvedByZero) {
   const LcpProblem p{MatrixXd{{-1.0, 4.0}, {2.0, -3.0}}, VectorXd{{0.0, 1.0}}};
   const LcpResult r = search(p);
-  expect_solved(p, r);
+  expect_solved_measured(p, r);
   EXPECT_EQ(r.z, VectorXd::Zero(2));
 }
 

@@ -16,14 +16,14 @@
 namespace bimrock {
 namespace {
 
-constexpr int kSide = 40;
+constexpr int kGridSide = 40;
 
-Model grid() {
+Model grid_model() {
   CaseSpec c;
   c.file = "case.yaml";
   c.block_materials = {testing::rock(10e9, 0.2)};
   c.joint_materials = {testing::springs("joint", 1e10, 1e10)};
-  c.blocks = testing::blocks_of(brick_pattern(kSide, kSide, 1.0, 1.0, Stagger::none));
+  c.blocks = testing::blocks_of(brick_pattern(kGridSide, kGridSide, 1.0, 1.0, Stagger::none));
   c.default_joint = "joint";
   return build_model(c);
 }
@@ -42,8 +42,8 @@ int at(const Model& m, int x, int y) {
 // Flagged blocks within grid distance `reach` of cell (x, y).
 int near(const Model& m, const std::vector<char>& zone, int x, int y, int reach) {
   int count = 0;
-  for (int j = 0; j < kSide; ++j)
-    for (int i = 0; i < kSide; ++i)
+  for (int j = 0; j < kGridSide; ++j)
+    for (int i = 0; i < kGridSide; ++i)
       if (std::abs(i - x) + std::abs(j - y) <= reach && zone[static_cast<std::size_t>(at(m, i, j))])
         ++count;
   return count;
@@ -52,7 +52,7 @@ int near(const Model& m, const std::vector<char>& zone, int x, int y, int reach)
 // One block and a 3 x 3 square far apart, grown together ring by ring to a target of 200:
 // after 5 rings 61 + 109 = 170 blocks, after 6 rings 85 + 141 = 226.
 TEST(GrowZone, RingsAroundEveryFlaggedBlockUntilTheTarget) {
-  const Model m = grid();
+  const Model m = grid_model();
   std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
   zone[static_cast<std::size_t>(at(m, 7, 7))] = 1;
   for (int y = 24; y <= 26; ++y)
@@ -76,7 +76,7 @@ TEST(GrowZone, RingsAroundEveryFlaggedBlockUntilTheTarget) {
 // either (the one between them once), 9 in all; the second, which passes the target, is added
 // whole: the 12 at distance 2, 21 in all.
 TEST(GrowZone, TheLastRingIsAddedWhole) {
-  const Model m = grid();
+  const Model m = grid_model();
   std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
   zone[static_cast<std::size_t>(at(m, 14, 15))] = 1;
   zone[static_cast<std::size_t>(at(m, 16, 15))] = 1;
@@ -91,7 +91,7 @@ TEST(GrowZone, TheLastRingIsAddedWhole) {
 // until the target: the single block at (15, 15) takes 7 rings (113 blocks, 85 after 6), 114
 // in all.
 TEST(GrowZone, OnlyBlocksWithinAreAdded) {
-  const Model m = grid();
+  const Model m = grid_model();
   std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
   std::vector<char> within(zone.size(), 1);
   zone[static_cast<std::size_t>(at(m, 3, 3))] = 1;
@@ -109,7 +109,7 @@ TEST(GrowZone, OnlyBlocksWithinAreAdded) {
 // With a ring limit, the growth stops there whatever the target: a single block and its first
 // two rings, 2 r^2 + 2 r + 1 = 13 blocks for r = 2 (as the counts above: 85 after 6 rings).
 TEST(GrowZone, StopsAfterTheRingsAsked) {
-  const Model m = grid();
+  const Model m = grid_model();
   std::vector<char> zone(static_cast<std::size_t>(m.n_blocks()), 0);
   zone[static_cast<std::size_t>(at(m, 15, 15))] = 1;
   const std::vector<char> grown = grow_zone(m, zone, m.n_blocks(), nullptr, 2);

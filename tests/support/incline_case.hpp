@@ -1,19 +1,18 @@
 #pragma once
 // A block on an inclined plane: the slope is the x-axis and gravity is tilted by the slope
 // angle, which is the same problem turned (exact); downslope is +x. Joints: Mohr-Coulomb
-// without cohesion, no tension, dilation `dilation_deg` (0: none). The base block [-2, w + 2] x [-1, 0] is fixed; the block
-// [0, w] x [0, h] rests on it. Stage 1 applies gravity, stage 2 (if `push` is non-zero) the
-// force `push` at the block's centroid in `increments` steps. Units: SI.
+// without cohesion, no tension, dilation `dilation_deg` (0: none). The base block [-2, w + 2] x
+// [-1, 0] is fixed; the block [0, w] x [0, h] rests on it. Stage 1 applies gravity, stage 2 (if
+// `push` is non-zero) the force `push` at the block's centroid in `increments` steps. Units: SI.
 #include <cmath>
 #include <optional>
 
 #include <bimrock/model/case_spec.hpp>
 
 #include "support/cases.hpp"
+#include "support/degrees.hpp"
 
 namespace bimrock::testing {
-
-inline constexpr double kDeg = M_PI / 180.0;
 
 struct Incline {
   double width = 2.0;

@@ -26,9 +26,9 @@
 namespace bimrock {
 namespace {
 
-constexpr double kCohesion = 1e6;
-constexpr double kWidth = 2.0;
-constexpr double kHeight = 1.0;
+constexpr double kSpecimenCohesion = 1e6;
+constexpr double kSpecimenWidth = 2.0;
+constexpr double kSpecimenHeight = 1.0;
 
 // cuts = 0: one block; otherwise irregular blocks from that many random cuts, joined by
 // continuum (penalty) interfaces.
@@ -40,13 +40,17 @@ CaseSpec compressed(const BlockStrength& strength, int cuts, double p_max) {
   c.joint_materials = {testing::continuum(kDefaultPenaltyFactor)};
   c.blocks =
       cuts == 0
-          ? testing::blocks_of({Polygon{{{0, 0}, {kWidth, 0}, {kWidth, kHeight}, {0, kHeight}}}})
-          : testing::blocks_of(testing::irregular_blocks(kWidth, kHeight, cuts, 7));
+          ? testing::blocks_of({Polygon{{{0, 0},
+                                         {kSpecimenWidth, 0},
+                                         {kSpecimenWidth, kSpecimenHeight},
+                                         {0, kSpecimenHeight}}}})
+          : testing::blocks_of(testing::irregular_blocks(kSpecimenWidth, kSpecimenHeight, cuts, 7));
   c.default_joint = "continuum";
-  c.supports.push_back(testing::roller({0, 0}, {kWidth, 0}));
-  c.supports.push_back(testing::roller({0, 0}, {0, kHeight}));
+  c.supports.push_back(testing::roller({0, 0}, {kSpecimenWidth, 0}));
+  c.supports.push_back(testing::roller({0, 0}, {0, kSpecimenHeight}));
   StageSpec load{"load", {}, 20, std::nullopt, {0, "load"}};
-  load.loads.tractions.push_back(testing::pressure_on({0, kHeight}, {kWidth, kHeight}, -p_max));
+  load.loads.tractions.push_back(
+      testing::pressure_on({0, kSpecimenHeight}, {kSpecimenWidth, kSpecimenHeight}, -p_max));
   c.stages = {load};
   return c;
 }
@@ -79,23 +83,25 @@ class BlockStrengthTest : public ::testing::TestWithParam<Variant> {};
 TEST_P(BlockStrengthTest, TrescaCollapsesAtTwiceTheCohesionOfTheInscribedPolygon) {
   BlockStrength s;
   s.criterion = BlockStrength::Criterion::tresca;
-  s.cohesion = kCohesion;
+  s.cohesion = kSpecimenCohesion;
   s.planes = GetParam().planes;
-  const double expected = 2 * kCohesion * std::cos(M_PI / s.planes);
-  expect_collapse_at(compressed(s, GetParam().cuts, 3 * kCohesion), 3 * kCohesion, expected);
+  const double expected = 2 * kSpecimenCohesion * std::cos(M_PI / s.planes);
+  expect_collapse_at(compressed(s, GetParam().cuts, 3 * kSpecimenCohesion), 3 * kSpecimenCohesion,
+                     expected);
 }
 
 TEST_P(BlockStrengthTest, MohrCoulombCollapsesAtItsUnconfinedStrength) {
   const double phi = 30.0 * M_PI / 180.0;
   BlockStrength s;
   s.criterion = BlockStrength::Criterion::mohr_coulomb;
-  s.cohesion = kCohesion;
+  s.cohesion = kSpecimenCohesion;
   s.friction = std::sin(phi);
   s.dilation = std::sin(phi);
   s.planes = GetParam().planes;
   const double ci = std::cos(M_PI / s.planes);
-  const double expected = 2 * kCohesion * std::cos(phi) * ci / (1 - std::sin(phi) * ci);
-  expect_collapse_at(compressed(s, GetParam().cuts, 5 * kCohesion), 5 * kCohesion, expected);
+  const double expected = 2 * kSpecimenCohesion * std::cos(phi) * ci / (1 - std::sin(phi) * ci);
+  expect_collapse_at(compressed(s, GetParam().cuts, 5 * kSpecimenCohesion), 5 * kSpecimenCohesion,
+                     expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(Blocks, BlockStrengthTest,

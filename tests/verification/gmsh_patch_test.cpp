@@ -20,15 +20,15 @@
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/model/model.hpp>
 
+#include "support/patch_problem.hpp"
+
 namespace bimrock {
 namespace {
 
-constexpr double kE = 30e9;
-constexpr double kNu = 0.2;
-constexpr double kSx = 3e6;
-constexpr double kSy = -2e6;
+namespace patch = testing::patch;
 
 TEST(GmshPatchTest, UniformTractionOnGroupsGivesUniformStressAndContinuumStrain) {
+  // The rock and the tractions of support/patch_problem.hpp.
   const std::string text = R"(schema: 1
 analysis: {plane: strain}
 materials:
@@ -52,14 +52,13 @@ loads:
   ASSERT_EQ(model.loads.tractions.size(), 6u);  // 3 edges on each loaded side
   const ElasticSolution s = solve_elastic(model);
 
-  const Eigen::Vector3d exact_stress(kSx, kSy, 0.0);
+  const Eigen::Vector3d exact_stress = patch::exact_stress();
   double stress_error = 0.0;
   for (const BlockState& b : s.blocks)
     stress_error = std::max(stress_error, (b.stress - exact_stress).cwiseAbs().maxCoeff());
-  EXPECT_LT(stress_error / std::max(std::abs(kSx), std::abs(kSy)), 1e-6);
+  EXPECT_LT(stress_error / std::max(std::abs(patch::kSx), std::abs(patch::kSy)), 1e-6);
 
-  const Eigen::Vector3d exact_strain(((1 - kNu * kNu) * kSx - kNu * (1 + kNu) * kSy) / kE,
-                                     ((1 - kNu * kNu) * kSy - kNu * (1 + kNu) * kSx) / kE, 0.0);
+  const Eigen::Vector3d exact_strain = patch::exact_strain();
   EXPECT_LT((s.mean_strain - exact_strain).norm() / exact_strain.norm(), 1e-6);
 }
 

@@ -27,15 +27,16 @@
 #include <bimrock/model/initial_stress.hpp>
 
 #include "support/cases.hpp"
+#include "support/degrees.hpp"
 #include "support/irregular_blocks.hpp"
 
 namespace bimrock {
 namespace {
 
-constexpr double kWidth = 4.0;
-constexpr double kHeight = 10.0;      // the ground level is the column's top
-constexpr double kUnitWeight = 26e3;  // [N/m^3]
-constexpr double kDeg = M_PI / 180.0;
+constexpr double kColumnWidth = 4.0;
+constexpr double kColumnHeight = 10.0;  // the ground level is the column's top
+constexpr double kUnitWeight = 26e3;    // [N/m^3]
+using testing::kDeg;
 
 // An irregular column of jointed rock on a roller base between roller walls, the ground at its
 // top; its joints frictional (phi, no cohesion or tension); one stage of gravity.
@@ -49,20 +50,21 @@ CaseSpec column(double k0, double friction_deg, unsigned seed = 7) {
   joint.strength = s;
   c.joint_materials = {joint};
   c.default_joint = "joint";
-  c.blocks = testing::blocks_of(testing::irregular_blocks(kWidth, kHeight, 9, seed));
-  c.supports = {testing::roller({0, 0}, {kWidth, 0}), testing::roller({0, 0}, {0, kHeight}),
-                testing::roller({kWidth, 0}, {kWidth, kHeight})};
+  c.blocks = testing::blocks_of(testing::irregular_blocks(kColumnWidth, kColumnHeight, 9, seed));
+  c.supports = {testing::roller({0, 0}, {kColumnWidth, 0}),
+                testing::roller({0, 0}, {0, kColumnHeight}),
+                testing::roller({kColumnWidth, 0}, {kColumnWidth, kColumnHeight})};
   StageSpec gravity{"in situ", {}, 1, std::nullopt, {0, "stages[0]"}};
   gravity.loads.gravity = Vec2(0.0, -1.0);
   c.stages = {gravity};
   InitialStressSpec field;
-  field.gravity = InitialStressSpec::Gravity{kHeight, kUnitWeight, k0};
+  field.gravity = InitialStressSpec::Gravity{kColumnHeight, kUnitWeight, k0};
   c.initial_stress = field;
   return c;
 }
 
 Eigen::Vector3d k0_stress(double k0, const Vec2& p) {
-  const double vertical = -kUnitWeight * (kHeight - p.y());
+  const double vertical = -kUnitWeight * (kColumnHeight - p.y());
   return {k0 * vertical, vertical, 0.0};
 }
 
@@ -87,7 +89,7 @@ TEST(InitialStress, AK0ColumnAtRestMovesNothingAndKeepsItsStress) {
   YieldPointIndex index;
   make_yield_points(model, &index);
   const PlasticParts plastic{&index, &r.state.points};
-  const double scale = kUnitWeight * kHeight;
+  const double scale = kUnitWeight * kColumnHeight;
   for (int b = 0; b < model.n_blocks(); ++b) {
     const BlockState s = block_state(model, b, r.state.u, plastic);
     const Eigen::Vector3d expected = k0_stress(k0, model.blocks[b].centroid);
@@ -147,7 +149,7 @@ int violated_by_field(const Model& model, double k0, double friction_deg) {
   int violated = 0;
   for (const YieldPoint& p : make_yield_points(model)) {
     const Eigen::Vector2d r = stress_on_plane(k0_stress(k0, p.position), p.normal);
-    const double tol = 1e-9 * kUnitWeight * kHeight;
+    const double tol = 1e-9 * kUnitWeight * kColumnHeight;
     if (std::abs(r(1)) + r(0) * std::tan(friction_deg * kDeg) > tol)
       ++violated;
   }
@@ -185,7 +187,7 @@ TEST(InitialStress, PointsOutsideTheirStrengthAreRefusedOrYieldInTheFirstStage) 
     for (const InterfacePointState& p : interface_state(model, f, r.state.u, plastic))
       base += 0.5 * face.segment.length() * p.stress(0);  // the end points' rule (lobatto)
   }
-  const double weight = kUnitWeight * kWidth * kHeight;
+  const double weight = kUnitWeight * kColumnWidth * kColumnHeight;
   EXPECT_NEAR(base, -weight, 1e-9 * weight);
   const YieldEvaluator yield(model, r.points);
   YieldValues f;

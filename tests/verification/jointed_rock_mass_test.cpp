@@ -26,8 +26,8 @@
 namespace bimrock {
 namespace {
 
-constexpr double kE = 89e9;
-constexpr double kNu = 0.26;
+constexpr double kRockE = 89e9;
+constexpr double kRockNu = 0.26;
 constexpr double kSize = 0.2;
 constexpr double kVerticalKn = 395.9e9;
 constexpr double kVerticalKs = 438.8e9;
@@ -48,7 +48,7 @@ constexpr LoadCase kCases[3] = {{-10e6, 0.0, -1.8333e-4, 0.36809e-4},
 CaseSpec jointed_mass(int n, const LoadCase& load, Integration rule) {
   CaseSpec c;
   c.file = "example1";
-  c.block_materials = {testing::rock(kE, kNu)};
+  c.block_materials = {testing::rock(kRockE, kRockNu)};
   c.joint_materials = {testing::springs("vertical", kVerticalKn, kVerticalKs, rule),
                        testing::springs("horizontal", kHorizontalKn, kHorizontalKs, rule)};
   c.blocks = testing::blocks_of(brick_pattern(n, n, kSize, kSize, Stagger::columns));
@@ -66,20 +66,22 @@ std::pair<double, double> mean_strains(int n, const LoadCase& load, Integration 
 }
 
 double continuous_direction_exact(int n, double sigma2) {
-  return sigma2 * ((1.0 - kNu * kNu) / kE + (n - 1.0) / (n * kSize * kVerticalKn));
+  return sigma2 * ((1.0 - kRockNu * kRockNu) / kRockE + (n - 1.0) / (n * kSize * kVerticalKn));
 }
 
 TEST(JointedRockMass, ContinuousDirectionMatchesHandDerivationForEverySize) {
   for (int n : {10, 20}) {
     const auto [eps1, eps2] = mean_strains(n, kCases[1], Integration::lobatto);
     EXPECT_NEAR(eps2, continuous_direction_exact(n, kCases[1].sigma2), 1e-6 * std::abs(eps2)) << n;
-    EXPECT_NEAR(eps1, -kNu * (1.0 + kNu) / kE * kCases[1].sigma2, 1e-6 * std::abs(eps1)) << n;
+    EXPECT_NEAR(eps1, -kRockNu * (1.0 + kRockNu) / kRockE * kCases[1].sigma2, 1e-6 * std::abs(eps1))
+        << n;
   }
 }
 
 TEST(JointedRockMass, HandDerivedLimitReproducesThePaperInTheContinuousDirection) {
   // Independent of the code: the paper's eps2 of case 2 from the closed form alone.
-  const double limit = kCases[1].sigma2 * ((1.0 - kNu * kNu) / kE + 1.0 / (kSize * kVerticalKn));
+  const double limit =
+      kCases[1].sigma2 * ((1.0 - kRockNu * kRockNu) / kRockE + 1.0 / (kSize * kVerticalKn));
   EXPECT_NEAR(limit, kCases[1].paper_eps2, 5e-4 * std::abs(kCases[1].paper_eps2));
 }
 

@@ -18,14 +18,12 @@
 
 #include "support/cases.hpp"
 #include "support/irregular_blocks.hpp"
+#include "support/patch_problem.hpp"
 
 namespace bimrock {
 namespace {
 
-constexpr double kE = 30e9;
-constexpr double kNu = 0.2;
-constexpr double kSx = 3e6;
-constexpr double kSy = -2e6;
+namespace patch = testing::patch;
 
 struct PatchError {
   double stress;  // max over blocks of |sigma - exact| / max |s|
@@ -37,20 +35,19 @@ PatchError patch_error(double penalty) {
   CaseSpec c;
   c.file = "patch";
   c.settings.penalty_factor = penalty;
-  c.block_materials = {testing::rock(kE, kNu)};
+  c.block_materials = {testing::rock(patch::kE, patch::kNu)};
   c.joint_materials = {testing::continuum(penalty)};
   c.blocks = testing::blocks_of(testing::irregular_blocks(1.0, 1.0, 9, 7));
   c.default_joint = "continuum";
-  testing::load_biaxially(c, 1.0, 1.0, kSx, kSy);
+  testing::load_biaxially(c, 1.0, 1.0, patch::kSx, patch::kSy);
   const Model model = build_model(c);
   const ElasticSolution s = solve_elastic(model);
-  const Eigen::Vector3d exact_stress(kSx, kSy, 0.0);
+  const Eigen::Vector3d exact_stress = patch::exact_stress();
   double stress_error = 0.0;
   for (const BlockState& b : s.blocks)
     stress_error = std::max(stress_error, (b.stress - exact_stress).cwiseAbs().maxCoeff());
-  const Eigen::Vector3d exact_strain(((1 - kNu * kNu) * kSx - kNu * (1 + kNu) * kSy) / kE,
-                                     ((1 - kNu * kNu) * kSy - kNu * (1 + kNu) * kSx) / kE, 0.0);
-  return {stress_error / std::max(std::abs(kSx), std::abs(kSy)),
+  const Eigen::Vector3d exact_strain = patch::exact_strain();
+  return {stress_error / std::max(std::abs(patch::kSx), std::abs(patch::kSy)),
           (s.mean_strain - exact_strain).norm() / exact_strain.norm(), model.n_blocks()};
 }
 

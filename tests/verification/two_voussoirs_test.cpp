@@ -32,11 +32,12 @@
 #include <bimrock/analysis/plastic_analysis.hpp>
 
 #include "support/cases.hpp"
+#include "support/degrees.hpp"
 
 namespace bimrock {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+using testing::kDeg;
 
 /// The least thrust ratio H_min / W (see the file comment).
 double least_thrust_ratio() {
