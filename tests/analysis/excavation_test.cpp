@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/model/errors.hpp>
 #include <bimrock/model/model.hpp>
 
 #include "support/cases.hpp"
@@ -182,6 +183,21 @@ TEST(Excavation, WithYieldingJointsThePathMatters) {
   EXPECT_GT(slip1, 0.0);
   EXPECT_GT(slip2, 0.0);
   EXPECT_GT(relative_difference(r2.state.u, r1.state.u), 1e-3);
+}
+
+TEST(Excavation, InstallingBlocksIsRefusedByTheAnalysisNamingThem) {
+  CaseSpec c = wall(false);
+  StageSpec lining{"lining", {}, 1, std::nullopt, {0, "stages[1]"}};
+  lining.install = box({-0.1, 3.1}, {1.1, 4.1});  // the top-left square, absent until then
+  c.stages.push_back(lining);
+  const Model model = build_model(c);
+  try {
+    run_plastic_analysis(model);
+    FAIL() << "installing was not refused";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("'lining' installs blocks"), std::string::npos);
+    EXPECT_EQ(e.blocks(), std::vector<int>{18});
+  }
 }
 
 }  // namespace

@@ -277,5 +277,66 @@ TEST(SlopeStabilityExample, FactorsOfSafetyBracketHoekAndBray) {
   }
 }
 
+// The tunnel (examples/tunnel_excavation): the in-situ stress balances the first stage's loads
+// (virtual work, block by block: round-off), each excavation removes the blocks of its zone
+// (blocks.csv's materials), the crown settles and the floor heaves as the heading's forces are
+// released, linearly while no joint yields (half the release, half the displacement), and the
+// bench's release ends in a proven collapse with its mechanism drawn.
+TEST(Examples, TheTunnelIsExcavatedFromItsInSituStressUntilAWedgeFallsFromTheCrown) {
+  const fs::path out = run_example("tunnel_excavation/case.yaml");
+  const nlohmann::json s = testing::read_json(out / "summary.json");
+  EXPECT_LT(s.at("initial_stress").at("relative_residual").get<double>(), 1e-12);
+  EXPECT_EQ(s.at("initial_stress").at("violated_points").get<int>(), 0);
+
+  std::map<std::string, std::vector<int>> of_material;
+  std::ifstream blocks(out / "blocks.csv");
+  std::string line;
+  std::getline(blocks, line);
+  while (std::getline(blocks, line)) {
+    const std::size_t comma = line.find(',');
+    const std::size_t next = line.find(',', comma + 1);
+    of_material[line.substr(comma + 1, next - comma - 1)].push_back(
+        std::stoi(line.substr(0, comma)));
+  }
+  const nlohmann::json& stages = s.at("stages");
+  ASSERT_EQ(stages.size(), 4u);
+  EXPECT_EQ(stages[1].at("excavated_blocks").get<std::vector<int>>(), of_material["heading"]);
+  EXPECT_EQ(stages[1].at("release").get<double>(), 0.5);
+  EXPECT_EQ(stages[3].at("excavated_blocks").get<std::vector<int>>(), of_material["bench"]);
+  // K once, and again after each of the two stages that excavate (condensations besides).
+  EXPECT_GE(s.at("factorizations").at("stiffness").get<int>(), 3);
+
+  // history.csv: the crown's and the floor's vertical displacement after each step.
+  std::ifstream history(out / "history.csv");
+  std::getline(history, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(history, line)) {
+    std::vector<std::string> cells;
+    std::size_t at = 0;
+    for (std::size_t comma; (comma = line.find(',', at)) != std::string::npos; at = comma + 1)
+      cells.push_back(line.substr(at, comma - at));
+    cells.push_back(line.substr(at));
+    rows.push_back(cells);
+  }
+  ASSERT_GE(rows.size(), 9u);
+  // Columns: stage, stage_name, increment, stage_factor, point_load_N, ux_crown_m, uy_crown_m,
+  // ux_wall_m, uy_wall_m, ux_floor_m, uy_floor_m, yielding_points, ...
+  const auto value = [&](std::size_t row, std::size_t column) {
+    return std::stod(rows[row][column]);
+  };
+  EXPECT_LT(std::abs(value(0, 6)), 1e-15);  // in situ: nothing moves
+  EXPECT_LT(value(2, 6), 0.0);              // the crown settles
+  EXPECT_GT(value(2, 10), 0.0);             // the floor heaves
+  EXPECT_EQ(value(2, 11), 0.0);             // no joint yields yet: elastic, linear in the release
+  EXPECT_NEAR(value(2, 6), 2.0 * value(1, 6), 1e-9 * std::abs(value(2, 6)));
+  EXPECT_NEAR(value(2, 10), 2.0 * value(1, 10), 1e-9 * std::abs(value(2, 10)));
+
+  const nlohmann::json& collapse = s.at("collapse");
+  ASSERT_FALSE(collapse.is_null());
+  EXPECT_EQ(collapse.at("stage").get<std::string>(), "bench");
+  EXPECT_TRUE(fs::exists(out / "collapse.png"));
+  EXPECT_TRUE(fs::exists(out / "final.png"));
+}
+
 }  // namespace
 }  // namespace bimrock

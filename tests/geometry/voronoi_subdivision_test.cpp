@@ -3,6 +3,8 @@
 // block); areas are the parents' closed-form areas.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <bimrock/geometry/brick_pattern.hpp>
@@ -88,6 +90,30 @@ TEST(VoronoiSubdivision, OnlyLargeBlocksAreSplitAndEachKeepsItsArea) {
   }
   EXPECT_EQ(split, 5);
   test::expect_convex_ccw(polygons(cells), 1e-8);
+}
+
+TEST(VoronoiSubdivision, ASliverOfSmallAreaIsCutAcrossIntoShortPieces) {
+  // The triangle (0, 0), (10, 0), (10, 0.05): area 0.25, under max_area 2 h^2 = 0.5 (h = 0.5),
+  // but 10 m long, as the partition of a rock mass round a circular opening fans thin triangles
+  // across the whole domain. It holds no grid seed, so it is cut across its length into 10 / 0.5
+  // = 20 pieces; the one at the tip, 0.25 (0.5 / 10)^2 = 0.000625 m^2, is under the smallest
+  // cell kept (0.01 h^2 = 0.0025 m^2) and joins its neighbour (together 0.0025 m^2, kept): 19
+  // pieces, each convex, none longer than 2 sqrt(max_area), the area kept.
+  const Polygon sliver{{{0, 0}, {10, 0}, {10, 0.05}}};
+  const std::vector<Polygon> blocks{sliver};
+  const auto cells = subdivide_large_blocks(blocks, 0.5, {.target_size = 0.5, .seed = 4});
+  EXPECT_EQ(cells.size(), 19u);
+  double area = 0.0;
+  for (const VoronoiCell& c : cells) {
+    area += signed_area(c.polygon);
+    double longest = 0.0;
+    for (const Vec2& a : c.polygon.vertices)
+      for (const Vec2& b : c.polygon.vertices)
+        longest = std::max(longest, (b - a).norm());
+    EXPECT_LE(longest, 2.0 * std::sqrt(0.5));
+  }
+  EXPECT_NEAR(area, 0.25, 1e-12);
+  test::expect_convex_ccw(polygons(cells), 1e-10);
 }
 
 TEST(VoronoiSubdivision, BadOptionsAndBlocksAreNamed) {

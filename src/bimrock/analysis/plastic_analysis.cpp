@@ -237,6 +237,14 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     ScopedTimer t(result.timings, "check supports");
     check_supports(model);
   }
+  for (const Stage& stage : model.stages)
+    if (!stage.installed.empty())
+      throw ModelError("stage '" + stage.name +
+                           "' installs blocks, which the analysis does not do yet: an installed "
+                           "block's interfaces must start from its neighbours' displacement at "
+                           "its installation; model the blocks as present from the start, or "
+                           "excavate only",
+                       stage.installed);
   YieldPointIndex index;
   result.points = make_yield_points(model, &index);
   if (model.initial_stress && !model.stages.empty())

@@ -3,17 +3,6 @@
 #include <bimrock/analysis/support_check.hpp>
 
 namespace bimrock {
-namespace {
-
-void add(CholeskyWork& sum, const CholeskyWork& w) {
-  sum.factorizations += w.factorizations;
-  sum.solved_columns += w.solved_columns;
-  sum.factorize_seconds += w.factorize_seconds;
-  sum.solve_seconds += w.solve_seconds;
-}
-
-}  // namespace
-
 StageStructure::StageStructure(const Model& model, const SolverTuning& tuning, Timings& timings)
     : model_(model), tuning_(tuning), timings_(timings) {}
 
@@ -43,8 +32,8 @@ void StageStructure::retire() {
   retired_.condensations += z.condensations;
   retired_.reserve_switches += z.reserve_switches;
   retired_.regions += z.regions;
-  add(retired_.tangent, z.tangent);
-  add(retired_.condensed, z.condensed);
+  retired_.tangent += z.tangent;
+  retired_.condensed += z.condensed;
   retired_solve_seconds_ += k_->work().solve_seconds;
 }
 
@@ -53,8 +42,8 @@ ZoneStatistics StageStructure::zone_statistics() const {
   z.condensations += retired_.condensations;
   z.reserve_switches += retired_.reserve_switches;
   z.regions += retired_.regions;
-  add(z.tangent, retired_.tangent);
-  add(z.condensed, retired_.condensed);
+  z.tangent += retired_.tangent;
+  z.condensed += retired_.condensed;
   return z;
 }
 

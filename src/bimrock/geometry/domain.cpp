@@ -3,33 +3,19 @@
 #include <string>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
+#include <bimrock/geometry/exact_points.hpp>
 #include <bimrock/geometry/geometry_error.hpp>
 #include <bimrock/geometry/outline.hpp>
 
 namespace bimrock {
 namespace {
 
-// Exact predicates on the input doubles: validation never depends on a tolerance.
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-K::Point_2 point(const Vec2& v) {
-  return {v.x(), v.y()};
-}
-
-K::Segment_2 edge(const Polygon& p, std::size_t k) {
-  return {point(p.vertices[k]), point(p.vertices[(k + 1) % p.size()])};
-}
-
-std::vector<K::Point_2> points(const Polygon& p) {
-  std::vector<K::Point_2> out;
-  out.reserve(p.size());
-  for (const Vec2& v : p.vertices)
-    out.push_back(point(v));
-  return out;
-}
+using exact::edge;
+using exact::K;
+using exact::point;
+using exact::points;
 
 bool edges_meet(const Polygon& a, const Polygon& b) {
   for (std::size_t i = 0; i < a.size(); ++i) {

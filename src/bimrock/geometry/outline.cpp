@@ -4,32 +4,18 @@
 #include <string>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 
+#include <bimrock/geometry/exact_points.hpp>
 #include <bimrock/geometry/geometry_error.hpp>
 
 namespace bimrock {
 namespace {
 
-// Exact predicates on the input doubles: validation never depends on a tolerance.
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-
-K::Point_2 point(const Vec2& v) {
-  return {v.x(), v.y()};
-}
-
-K::Segment_2 edge(const Polygon& p, std::size_t k) {
-  return {point(p.vertices[k]), point(p.vertices[(k + 1) % p.size()])};
-}
-
-std::vector<K::Point_2> points(const Polygon& p) {
-  std::vector<K::Point_2> out;
-  out.reserve(p.size());
-  for (const Vec2& v : p.vertices)
-    out.push_back(point(v));
-  return out;
-}
+using exact::edge;
+using exact::K;
+using exact::point;
+using exact::points;
 
 std::string vertex_name(std::size_t k) {
   return "vertex " + std::to_string(k + 1);

@@ -30,6 +30,38 @@ void check(const VoronoiOptions& o) {
     throw GeometryError("voronoi.min_cell_fraction", "must lie in [0, 1)");
 }
 
+// The two vertices of a convex polygon farthest apart (its diameter's ends).
+std::pair<Vec2, Vec2> farthest_vertices(const Polygon& block) {
+  std::pair<Vec2, Vec2> ends{block.vertices.front(), block.vertices.front()};
+  double longest = -1.0;
+  for (const Vec2& a : block.vertices)
+    for (const Vec2& b : block.vertices)
+      if ((b - a).squaredNorm() > longest) {
+        longest = (b - a).squaredNorm();
+        ends = {a, b};
+      }
+  return ends;
+}
+
+// Cuts across a long thin block (a sliver of a convex partition fanning from a far corner, which
+// holds fewer grid seeds than its length needs, or none): straight lines normal to its diameter,
+// about h apart, split it into convex pieces about h long. Seeds along so thin a block would be
+// nearly collinear, their Voronoi vertices far away or at infinity.
+std::vector<JointTrace> transverse_cuts(const Polygon& block, double h) {
+  const auto [a, b] = farthest_vertices(block);
+  const double length = (b - a).norm();
+  const auto pieces = static_cast<int>(std::round(length / h));
+  const Vec2 along = (b - a) / length;
+  const Vec2 across(-along.y(), along.x());
+  const double reach = bbox_of(block).diagonal();
+  std::vector<JointTrace> cuts;
+  for (int i = 1; i < pieces; ++i) {
+    const Vec2 p = a + along * (length * i / pieces);
+    cuts.push_back({{p - reach * across, p + reach * across}, -1, i - 1, ""});
+  }
+  return cuts;
+}
+
 std::vector<Vec2> seed_points(const Polygon& block, const VoronoiOptions& o, SeededRandom& rng) {
   const BBox box = bbox_of(block);
   const double inset = -model_tolerance(box);  // strictly inside, not on a side
@@ -119,9 +151,13 @@ std::vector<VoronoiCell> voronoi_subdivision(const Polygon& block, int parent,
     throw GeometryError("blocks[" + std::to_string(parent) + "]", describe(c));
   SeededRandom rng(derive_seed(options.seed, static_cast<std::uint64_t>(parent)));
   const std::vector<Vec2> seeds = seed_points(block, options, rng);
-  if (seeds.size() < 2)
+  const auto [end_a, end_b] = farthest_vertices(block);
+  const bool thin =
+      static_cast<double>(seeds.size()) < (end_b - end_a).norm() / options.target_size - 1.0;
+  if (!thin && seeds.size() < 2)
     return {{block, parent}};
-  const std::vector<JointTrace> edges = voronoi_edges(seeds, box);
+  const std::vector<JointTrace> edges =
+      thin ? transverse_cuts(block, options.target_size) : voronoi_edges(seeds, box);
   CutOptions cut_options;
   cut_options.min_block_area =
       options.min_cell_fraction * options.target_size * options.target_size;
@@ -138,7 +174,13 @@ std::vector<VoronoiCell> subdivide_large_blocks(std::span<const Polygon> blocks,
   std::vector<VoronoiCell> cells;
   for (std::size_t k = 0; k < blocks.size(); ++k) {
     const int parent = static_cast<int>(k);
-    if (signed_area(blocks[k]) <= max_area) {
+    // Small enough, and not longer than twice the side of the largest square kept whole (a
+    // sliver of small area can span the domain), unless smaller than the smallest cell kept.
+    const double area = signed_area(blocks[k]);
+    const double h = options.target_size;
+    const auto [a, b] = farthest_vertices(blocks[k]);
+    if (area <= max_area && ((b - a).norm() <= 2.0 * std::sqrt(max_area) ||
+                             area <= options.min_cell_fraction * h * h)) {
       cells.push_back({blocks[k], parent});
       continue;
     }

@@ -39,7 +39,8 @@ struct VoronoiCell {
 std::vector<VoronoiCell> voronoi_subdivision(const Polygon& block, int parent,
                                              const VoronoiOptions& options);
 
-/// Splits every block with area above max_area; the others come back whole (parent = index).
+/// Splits every block with area above max_area or longer (its diameter) than 2 sqrt(max_area);
+/// the others come back whole (parent = index).
 std::vector<VoronoiCell> subdivide_large_blocks(std::span<const Polygon> blocks, double max_area,
                                                 const VoronoiOptions& options);
 

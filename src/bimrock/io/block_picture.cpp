@@ -85,7 +85,10 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
   const double magnify =
-      displacement_magnification(m, pic.u, pic.displayed_fraction, f.box.diagonal());
+      displacement_magnification(m, pic.u, pic.displayed_fraction, f.box.diagonal(), pic.present);
+  const auto drawn = [&](int b) {
+    return pic.present.empty() || pic.present[static_cast<std::size_t>(b)] != 0;
+  };
   const Eigen::VectorXd none;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   if (magnify > 0.0) {
@@ -97,6 +100,8 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
     }
   }
   for (int b = 0; b < m.n_blocks(); ++b) {
+    if (!drawn(b))
+      continue;
     polygon_path(cr, f, m, b, pic.u, magnify);
     const double* fill =
         kMaterialColours[static_cast<std::size_t>(m.blocks[b].material) % kColours];
@@ -110,6 +115,8 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
   for (int k = 0; k < m.n_interfaces(); ++k) {
     const Interface& in = m.interfaces[k];
     InterfaceMark mark = pic.marks.empty() ? InterfaceMark::joint : pic.marks[k];
+    if (!drawn(in.block_i) || (!in.is_support() && !drawn(in.block_j)))
+      continue;
     if (in.is_support()) {
       cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
       cairo_set_line_width(cr, 3.0);
@@ -210,14 +217,15 @@ double scale_bar_length(double width) {
 }
 
 double displacement_magnification(const Model& model, const Eigen::VectorXd& u, double fraction,
-                                  double size) {
+                                  double size, const std::vector<char>& present) {
   if (u.size() == 0)
     return 0.0;
   double largest = 0.0;
   for (int b = 0; b < model.n_blocks(); ++b)
-    for (const Vec2& v : model.blocks[b].polygon.vertices)
-      largest =
-          std::max(largest, (block_Q(model.blocks[b].centroid, v) * u.segment<6>(6 * b)).norm());
+    if (present.empty() || present[static_cast<std::size_t>(b)] != 0)
+      for (const Vec2& v : model.blocks[b].polygon.vertices)
+        largest =
+            std::max(largest, (block_Q(model.blocks[b].centroid, v) * u.segment<6>(6 * b)).norm());
   return largest > 0.0 ? fraction * size / largest : 0.0;
 }
 

@@ -26,6 +26,9 @@ struct BlockPicture {
   int width_px = 1000;
   /// The phreatic surface to draw (empty: none), across the picture.
   std::vector<Vec2> water_surface;
+  /// Per block, whether it is drawn (empty: all): excavated blocks show only as the grey outline
+  /// of the undisplaced model.
+  std::vector<char> present{};
 };
 
 /// The length of a picture's scale bar for a drawing `width` wide [m]: the largest 1, 2 or 5
@@ -34,8 +37,10 @@ struct BlockPicture {
 
 /// How many times the displacements `u` are magnified in a picture of the model: so that the
 /// largest displacement of a block corner is `fraction` of `size` [m] (0: no displacement).
+/// `present` (per block; empty: all) limits it to those blocks.
 [[nodiscard]] double displacement_magnification(const Model& model, const Eigen::VectorXd& u,
-                                                double fraction, double size);
+                                                double fraction, double size,
+                                                const std::vector<char>& present = {});
 
 /// Writes `<stem>.png` and `<stem>.svg`: the blocks coloured by material (a legend names them
 /// where there are several), the magnification of the displacements, and a scale bar.

@@ -11,6 +11,7 @@
 #include <bimrock/io/mechanism_table.hpp>
 #include <bimrock/io/run_summary.hpp>
 #include <bimrock/io/state_tables.hpp>
+#include <bimrock/model/stage_blocks.hpp>
 
 namespace bimrock {
 
@@ -256,13 +257,16 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
   if (model_.n_blocks() <= kMaxPictureBlocks) {
     const int stage =
         result.collapse ? result.collapse->stage : static_cast<int>(model_.stages.size()) - 1;
+    // The blocks standing at the end (an excavated block keeps the displacement it had).
+    const std::vector<char> present = blocks_present(model_, stage);
     write_block_picture(model_,
                         {"final state (displacements magnified)",
                          fields.u,
                          0.05,
                          {},
                          1000,
-                         water_surface(model_, stage)},
+                         water_surface(model_, stage),
+                         present},
                         dir / "final");
     files.insert(files.end(), {"final.png", "final.svg"});
     if (result.collapse && result.collapse->direction.size() == model_.n_dofs()) {
@@ -270,7 +274,7 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
           model_,
           {"collapse mechanism (red: slipping joints, blue: opening)", result.collapse->direction,
            0.08, mechanism_marks(model_, result.points, *result.collapse), 1000,
-           water_surface(model_, stage)},
+           water_surface(model_, stage), present},
           dir / "collapse");
       files.insert(files.end(), {"collapse.png", "collapse.svg"});
     }

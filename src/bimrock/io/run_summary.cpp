@@ -170,6 +170,10 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                    {"point_load_N", point_load_resultant(st)}};
       if (st.control)
         item["control_displacement_m"] = st.control->displacement;
+      if (!st.excavated.empty()) {
+        item["excavated_blocks"] = st.excavated;
+        item["release"] = st.release;
+      }
       stages.push_back(std::move(item));
     }
     j["stages"] = stages;

@@ -14,6 +14,14 @@ struct CholeskyWork {
   std::int64_t solved_columns = 0;  ///< right-hand sides, over all solves
   double factorize_seconds = 0.0;
   double solve_seconds = 0.0;
+
+  CholeskyWork& operator+=(const CholeskyWork& w) {
+    factorizations += w.factorizations;
+    solved_columns += w.solved_columns;
+    factorize_seconds += w.factorize_seconds;
+    solve_seconds += w.solve_seconds;
+    return *this;
+  }
 };
 
 class SpdSolver {

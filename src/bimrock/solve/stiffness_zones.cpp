@@ -23,13 +23,6 @@ int size(const std::vector<char>& flags) {
   return static_cast<int>(std::count(flags.begin(), flags.end(), 1));
 }
 
-void add(CholeskyWork& total, const CholeskyWork& w) {
-  total.factorizations += w.factorizations;
-  total.solved_columns += w.solved_columns;
-  total.factorize_seconds += w.factorize_seconds;
-  total.solve_seconds += w.solve_seconds;
-}
-
 }  // namespace
 
 StiffnessZones::StiffnessZones(const Model& model, SparseCholesky& k, const SparseMatrix& k_lower,
@@ -176,9 +169,9 @@ void StiffnessZones::whole() {
 // The work of the solvers that go, for the totals.
 void StiffnessZones::retire() {
   if (tangent_)
-    add(retired_tangent_, tangent_->cholesky.work());
+    retired_tangent_ += tangent_->cholesky.work();
   if (condensed_ && !condensed_->whole())
-    add(retired_s_, condensed_->factor().work());
+    retired_s_ += condensed_->factor().work();
   columns_.reset();
   tangent_.reset();
   condensed_.reset();
@@ -197,10 +190,10 @@ ZoneStatistics StiffnessZones::statistics() const {
   s.zone_blocks = condensed_ ? condensed_->zone_blocks() : 0;
   s.tangent = retired_tangent_;
   if (tangent_)
-    add(s.tangent, tangent_->cholesky.work());
+    s.tangent += tangent_->cholesky.work();
   s.condensed = retired_s_;
   if (condensed_ && !condensed_->whole())
-    add(s.condensed, condensed_->factor().work());
+    s.condensed += condensed_->factor().work();
   return s;
 }
 
