@@ -37,12 +37,12 @@
 namespace bimrock {
 namespace {
 
-constexpr double kRadius = 1.0;     // a [m]
-constexpr double kExtent = 20.0;    // R [m]
-constexpr double kVertical = 10e6;  // p [Pa], compression
-constexpr double kRatio = 0.5;      // K
-constexpr double kYoung = 10e9;     // [Pa]
-constexpr double kPoisson = 0.25;
+constexpr double kRadius = 1.0;      // a [m]
+constexpr double kExtent = 20.0;     // R [m]
+constexpr double kVertical = 10e6;   // p [Pa], compression
+constexpr double kRatio = 0.5;       // K
+constexpr double kRockYoung = 10e9;  // [Pa]
+constexpr double kRockPoisson = 0.25;
 constexpr int kWallSegments = 24;  // of the quarter circle
 
 double kirsch_hoop(double r, double theta) {
@@ -54,9 +54,9 @@ double kirsch_hoop(double r, double theta) {
 }
 
 double kirsch_wall_displacement(double theta) {
-  const double g = kYoung / (2 * (1 + kPoisson));
+  const double g = kRockYoung / (2 * (1 + kRockPoisson));
   return -(kVertical * kRadius / (4 * g)) *
-         ((1 + kRatio) - (3 - 4 * kPoisson) * (1 - kRatio) * std::cos(2 * theta));
+         ((1 + kRatio) - (3 - 4 * kRockPoisson) * (1 - kRatio) * std::cos(2 * theta));
 }
 
 // The quarter [0, L]^2 less nothing: rings of triangles round the quarter disc, graded
@@ -85,7 +85,7 @@ CaseSpec quarter(int rings, int sectors) {
   CaseSpec c;
   c.file = "kirsch";
   c.settings.plane = PlaneMode::strain;
-  BlockMaterial rock = testing::rock(kYoung, kPoisson);
+  BlockMaterial rock = testing::rock(kRockYoung, kRockPoisson);
   BlockMaterial opening = rock;
   opening.name = "opening";
   c.block_materials = {rock, opening};
