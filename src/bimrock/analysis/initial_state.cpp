@@ -36,17 +36,16 @@ Eigen::Vector3d block_within_strength(const BlockStrength& law, const Eigen::Vec
   const double mean = 0.5 * (sigma(0) + sigma(1));
   const Eigen::Vector3d deviator(0.5 * (sigma(0) - sigma(1)), -0.5 * (sigma(0) - sigma(1)),
                                  sigma(2));
-  // a . (mean [1, 1, 0]) is the same for every plane: the friction term.
-  const double friction = planes.a.row(0).head<2>().sum() * mean;
-  double s = mean;
-  if (friction > planes.strength && planes.a.row(0).head<2>().sum() > 0.0)
-    s = planes.strength / planes.a.row(0).head<2>().sum();
-  const double room = planes.strength - planes.a.row(0).head<2>().sum() * s;
+  // a_k . [m, m, 0] is the same for every plane (sin(phi) cos(pi / n) m): the mean stress's
+  // share of each, which leaves the deviator the room up to the strength.
+  const double per_mean = planes.a.row(0).head<2>().sum();
+  const double s = per_mean > 0.0 ? std::min(mean, planes.strength / per_mean) : mean;
+  const double room = std::max(0.0, planes.strength - per_mean * s);
   double scale = 1.0;
   for (Eigen::Index k = 0; k < planes.a.rows(); ++k) {
     const double load = planes.a.row(k).dot(deviator);
     if (load > 0.0)
-      scale = std::min(scale, std::max(0.0, room) / load);
+      scale = std::min(scale, room / load);
   }
   return Eigen::Vector3d(s, s, 0.0) + scale * deviator;
 }

@@ -137,12 +137,9 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
       const std::vector<char> present = blocks_present(model, st);
       unreleased += excavation_forces(model, present, stage.excavated, result.state.u,
                                       {&index, &result.state.points});
-      const YieldEvaluator gone(model, result.points, &present);
-      YieldValues f;
-      gone.evaluate(result.state.points, result.state.u, f);
       for (std::size_t p = 0; p < result.points.size(); ++p)
-        if (f.largest(p) == kAbsentPoint)
-          result.state.points[p] = PlasticState{};
+        if (!point_present(result.points[p], present))
+          result.state.points[p] = PlasticState{};  // gone with its blocks
       structure.stand_on(present);
     }
     Eigen::VectorXd load = stage_loads(model, st, structure.present());
@@ -249,10 +246,10 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   result.points = make_yield_points(model, &index);
   if (model.initial_stress && !model.stages.empty())
     result.initial_stress = check_initial_stress(model, result.points, options);
-  // K, assembled and factorized once for the whole analysis, and again after each stage that
-  // excavates (its lower triangle is kept: the reduced tangent is K minus the plastic part).
+  // K of the blocks present, assembled and factorized by run_stages at the start and again only
+  // after a stage that excavates (its lower triangle is kept: the reduced tangent is K minus the
+  // plastic part).
   StageStructure structure(model, tuning.solver, result.timings);
-  structure.stand_on(blocks_present(model, -1));
   IncrementMemory memory;
   if (!options.factor_of_safety) {
     run_stages(model, structure, index, options, tuning.candidates, memory, on_increment, result);

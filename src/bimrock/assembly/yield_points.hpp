@@ -42,6 +42,12 @@ inline void flag_blocks(const YieldPoint& p, std::vector<char>& flags) {
     flags[static_cast<std::size_t>(p.block_j)] = 1;
 }
 
+/// Whether a point's blocks are all present (per block; an excavated block's points are not).
+inline bool point_present(const YieldPoint& p, const std::vector<char>& present) {
+  return present[static_cast<std::size_t>(p.block_i)] != 0 &&
+         (p.block_j == kGround || present[static_cast<std::size_t>(p.block_j)] != 0);
+}
+
 /// @param index if given, filled with where each point stands
 std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* index = nullptr);
 

@@ -16,8 +16,7 @@ YieldEvaluator::YieldEvaluator(const Model& model, const std::vector<YieldPoint>
     const YieldPoint& p = points[k];
     first_.push_back(first_.back() + n_modes(model, p));
     if (present)
-      absent_[k] = !(*present)[static_cast<std::size_t>(p.block_i)] ||
-                   (p.block_j != kGround && !(*present)[static_cast<std::size_t>(p.block_j)]);
+      absent_[k] = !point_present(p, *present);
   }
   block_laws_.resize(model.block_materials.size());
   for (std::size_t m = 0; m < model.block_materials.size(); ++m) {

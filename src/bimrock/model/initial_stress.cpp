@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <bimrock/model/stage_blocks.hpp>  // present_at_start
+
 namespace bimrock {
 
 Eigen::Vector3d initial_stress_at(const InitialStressSpec& field, const Vec2& p) {
@@ -19,12 +21,6 @@ Eigen::Vector2d stress_on_plane(const Eigen::Vector3d& sigma, const Vec2& n) {
   const Vec2 traction(sigma(0) * n.x() + sigma(2) * n.y(), sigma(2) * n.x() + sigma(1) * n.y());
   const Vec2 s(-n.y(), n.x());
   return {traction.dot(n), traction.dot(s)};
-}
-
-bool present_at_start(const Model& model, int block) {
-  return std::none_of(model.stages.begin(), model.stages.end(), [&](const Stage& stage) {
-    return std::binary_search(stage.installed.begin(), stage.installed.end(), block);
-  });
 }
 
 Eigen::Vector3d block_initial_stress(const Model& model, int block) {

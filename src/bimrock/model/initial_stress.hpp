@@ -18,9 +18,6 @@ Eigen::Vector3d initial_stress_at(const InitialStressSpec& field, const Vec2& p)
 /// s = (-n_y, n_x), the interface frame of eq. 4.
 Eigen::Vector2d stress_on_plane(const Eigen::Vector3d& sigma, const Vec2& n);
 
-/// Whether a block stands before the first stage: all but those a stage installs.
-bool present_at_start(const Model& model, int block);
-
 /// A block's initial stress: the field at its centroid (its mean, the field being linear), or 0
 /// without a field or for a block installed later.
 Eigen::Vector3d block_initial_stress(const Model& model, int block);

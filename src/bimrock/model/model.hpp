@@ -83,9 +83,11 @@ struct Stage {
   std::optional<DisplacementControl> control;
   SourceRef source;
   // After `source`, with initializers: positional initializations of the fields above still hold.
-  std::vector<int> excavated{};  ///< blocks removed at the stage's start (present until then), sorted
-  std::vector<int> installed{};  ///< blocks added at the stage's start (absent until then), sorted
-  double release = 1.0;          ///< fraction of the unreleased excavation forces released here
+  /// Blocks removed at the stage's start (present until then), sorted.
+  std::vector<int> excavated{};
+  /// Blocks added at the stage's start (absent until then), sorted.
+  std::vector<int> installed{};
+  double release = 1.0;  ///< fraction of the unreleased excavation forces released here
 };
 
 struct Monitor {

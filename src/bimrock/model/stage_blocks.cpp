@@ -192,6 +192,12 @@ void resolve_stage_blocks(Model& model, const std::vector<StageSpec>& stages) {
   StageBlocks(model, stages).resolve();
 }
 
+bool present_at_start(const Model& model, int block) {
+  return std::none_of(model.stages.begin(), model.stages.end(), [&](const Stage& stage) {
+    return std::binary_search(stage.installed.begin(), stage.installed.end(), block);
+  });
+}
+
 std::vector<char> blocks_present(const Model& model, int stage) {
   if (stage < -1 || stage >= static_cast<int>(model.stages.size()))
     throw std::out_of_range("blocks_present: no stage " + std::to_string(stage));

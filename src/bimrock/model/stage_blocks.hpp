@@ -18,6 +18,11 @@ namespace bimrock {
 /// a block absent during the stage. Monitors may follow any block.
 void resolve_stage_blocks(Model& model, const std::vector<StageSpec>& stages);
 
+/// Whether a block stands before the first stage: all but those some stage installs (`installed`
+/// of each stage sorted, as resolve_stage_blocks() leaves it). One block's answer, without the
+/// vector blocks_present(model, -1) makes.
+bool present_at_start(const Model& model, int block);
+
 /// The blocks present during stage `stage` (after its own excavation and installation): 1 for
 /// present, 0 for absent, by block index. stage = -1: before the first stage, when every block is
 /// present except those some stage installs. Throws std::out_of_range for another stage.
