@@ -154,6 +154,30 @@ struct InitialStressSpec {
   SourceRef source;
 };
 
+/// A rock bolt or anchor (docs/case-file.md, "Bolts"): a bar from its head `from` to its far end
+/// `to`, installed at the start of a stage. An anchored bolt is fixed at both ends and free
+/// between them: one spring from head to anchor, with the stiffness of its free length. A grouted
+/// bolt is bonded along its length: a spring at each joint it crosses. Each spring carries an
+/// axial force up to the tensile capacity, and, if a shear stiffness is given, a shear force
+/// (up to the shear capacity, if given). Forces and stiffnesses are those of one bolt; bolts
+/// repeat along the model's out-of-plane direction at `spacing`.
+struct BoltSpec {
+  enum class Kind { anchored, grouted };
+  std::string name;  ///< empty: "bolt <index>"
+  Kind kind = Kind::anchored;
+  Vec2 from = Vec2::Zero();      ///< the head A [m]
+  Vec2 to = Vec2::Zero();        ///< the far end B [m]
+  double axial_stiffness = 0.0;  ///< [N/m]: of the free length (anchored), at each joint (grouted)
+  double capacity = 0.0;         ///< tensile capacity [N]
+  double pretension = 0.0;       ///< [N], anchored bolts only
+  double shear_stiffness = 0.0;  ///< [N/m], 0: the bolt carries no shear
+  std::optional<double> shear_capacity;  ///< [N]; none: the shear stays elastic
+  std::optional<double> spacing;         ///< out-of-plane [m]; none: the model's thickness
+  std::string install;                   ///< the stage's name; empty: the first stage
+  SourceRef source;
+  std::map<std::string, int> lines;  ///< the line of each key ("bolts[2].to"), for errors
+};
+
 /// Blocks cut from a rock domain by joint sets (the case file's `domain`), instead of listed.
 struct DomainSpec {
   Domain domain;                     ///< outline, holes, zones (each naming its block material)
@@ -215,6 +239,7 @@ struct CaseSpec {
   LoadsSpec loads;                ///< the loads of an elastic analysis (no stages)
   std::vector<StageSpec> stages;  ///< a nonlinear analysis when not empty
   std::optional<InitialStressSpec> initial_stress;  ///< stages only
+  std::vector<BoltSpec> bolts;                      ///< stages only
   std::vector<MonitorSpec> monitors;
   CaseLimits limits;
 };

@@ -90,6 +90,36 @@ struct Stage {
   double release = 1.0;  ///< fraction of the unreleased excavation forces released here
 };
 
+/// A rock bolt or anchor (BoltSpec, resolved): its springs are Model::bolt_springs.
+struct Bolt {
+  std::string name;
+  BoltSpec::Kind kind = BoltSpec::Kind::anchored;
+  Vec2 from = Vec2::Zero();  ///< head [m]
+  Vec2 to = Vec2::Zero();    ///< far end [m]
+  double axial_stiffness = 0.0;          ///< per spring [N/m]
+  double shear_stiffness = 0.0;          ///< per spring [N/m]
+  double capacity = 0.0;                 ///< tensile [N]
+  std::optional<double> shear_capacity;  ///< [N]; none: elastic in shear
+  double pretension = 0.0;               ///< [N]
+  double per_model = 1.0;  ///< bolts in the model's thickness: thickness / spacing
+  int stage = 0;           ///< installed at this stage's start
+  SourceRef source;
+};
+
+/// One spring of a bolt (docs/formulation.md, "Bolts"): it joins point `a` of block `block_a`
+/// to point `b` of block `block_b` along `axis` (unit, from the bolt's head towards its far end);
+/// its relative displacement is delta = T(axis) (Q_b(b) d_b - Q_a(a) d_a), its elongation first.
+/// An anchored bolt has one, from head to anchor; a grouted bolt one at each joint it crosses
+/// (a == b there), between the blocks on either side.
+struct BoltSpring {
+  int bolt = 0;  ///< index into Model::bolts
+  int block_a = 0;
+  int block_b = 0;
+  Vec2 a = Vec2::Zero();
+  Vec2 b = Vec2::Zero();
+  Vec2 axis = Vec2::UnitX();
+};
+
 struct Monitor {
   std::string name;
   int block = 0;
@@ -109,6 +139,8 @@ struct Model {
   std::vector<Stage> stages;           ///< of a nonlinear analysis
   std::vector<Monitor> monitors;
   std::optional<InitialStressSpec> initial_stress;  ///< model/initial_stress.hpp
+  std::vector<Bolt> bolts;                          ///< model/bolts.hpp
+  std::vector<BoltSpring> bolt_springs;             ///< by bolt, head to far end
   double tolerance = 0.0;                           ///< length tolerance, see model_tolerance()
 
   [[nodiscard]] int n_blocks() const { return static_cast<int>(blocks.size()); }
