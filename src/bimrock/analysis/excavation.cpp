@@ -1,6 +1,7 @@
 #include <bimrock/analysis/excavation.hpp>
 
 #include <bimrock/assembly/integration_points.hpp>
+#include <bimrock/assembly/yield_modes.hpp>
 #include <bimrock/model/initial_stress.hpp>
 
 namespace bimrock {
@@ -36,12 +37,13 @@ Eigen::Matrix<double, 12, 1> interface_force(const Model& model, int index,
 
 }  // namespace
 
-Eigen::VectorXd excavation_forces(const Model& model, const std::vector<char>& present,
-                                  const std::vector<int>& excavated, const Eigen::VectorXd& u,
-                                  const PlasticParts& plastic) {
+Eigen::VectorXd excavation_forces(const Model& model, const Presence& before, const Presence& after,
+                                  const Eigen::VectorXd& u, const PlasticParts& plastic,
+                                  const std::vector<YieldPoint>& points) {
   std::vector<char> gone(model.blocks.size(), 0);
-  for (int b : excavated)
-    gone[static_cast<std::size_t>(b)] = 1;
+  for (std::size_t b = 0; b < gone.size(); ++b)
+    gone[b] = before.blocks[b] != 0 && after.blocks[b] == 0;
+  const std::vector<char>& present = after.blocks;
   Eigen::VectorXd forces = Eigen::VectorXd::Zero(model.n_dofs());
   for (int k = 0; k < model.n_interfaces(); ++k) {
     const Interface& f = model.interfaces[k];
@@ -58,6 +60,20 @@ Eigen::VectorXd excavation_forces(const Model& model, const std::vector<char>& p
       forces.segment<6>(6 * f.block_i) += force.head<6>();
     else
       forces.segment<6>(6 * f.block_j) += force.tail<6>();
+  }
+  for (std::size_t s = 0; s < model.bolt_springs.size(); ++s) {
+    const BoltSpring& spring = model.bolt_springs[s];
+    if (!before.springs[s] || after.springs[s])
+      continue;  // absent before, or stands on
+    const YieldPoint& p = points[static_cast<std::size_t>(plastic.index->spring_points[s])];
+    const Eigen::Vector2d force =
+        local_stress(model, p, (*plastic.states)[plastic.index->spring_points[s]], u);
+    const Eigen::Matrix<double, 12, 1> on_blocks =
+        p.weight * local_operator(model, p).e.transpose() * force;
+    if (present[static_cast<std::size_t>(spring.block_a)])
+      forces.segment<6>(6 * spring.block_a) += on_blocks.head<6>();
+    if (present[static_cast<std::size_t>(spring.block_b)])
+      forces.segment<6>(6 * spring.block_b) += on_blocks.tail<6>();
   }
   return forces;
 }

@@ -10,17 +10,19 @@
 
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/model/model.hpp>
-#include <bimrock/model/stage_blocks.hpp>  // blocks_present
+#include <bimrock/model/presence.hpp>
 
 namespace bimrock {
 
-/// The forces [N] on the unknowns of the blocks flagged in `present` (after the excavation) of
-/// every interface between one of them and an `excavated` block: t integral B^T R ds in the
-/// state (u, plastic). R's initial part is integrated by 2 Gauss points (exact, it is linear),
-/// the rest at the interface's own integration points, as K and the plastic loads integrate it,
-/// so that the forces released are exactly those the remaining blocks' equilibrium held.
-Eigen::VectorXd excavation_forces(const Model& model, const std::vector<char>& present,
-                                  const std::vector<int>& excavated, const Eigen::VectorXd& u,
-                                  const PlasticParts& plastic);
+/// The forces [N] on the unknowns of the blocks present `after` the excavation of every
+/// interface between one of them and a block excavated (present `before`, not after): t integral
+/// B^T R ds in the state (u, plastic); and of every bolt spring between them, its force
+/// (`points`: the analysis' yield points, whose bolt springs hold their installation). R's
+/// initial part is integrated by 2 Gauss points (exact, it is linear), the rest at the
+/// interface's own integration points, as K and the plastic loads integrate it, so that the
+/// forces released are exactly those the remaining blocks' equilibrium held.
+Eigen::VectorXd excavation_forces(const Model& model, const Presence& before, const Presence& after,
+                                  const Eigen::VectorXd& u, const PlasticParts& plastic,
+                                  const std::vector<YieldPoint>& points);
 
 }  // namespace bimrock

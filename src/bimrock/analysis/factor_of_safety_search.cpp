@@ -20,7 +20,7 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
                                      Timings& timings, const FactorTrialCallback& on_trial,
-                                     const std::vector<char>* present) {
+                                     const Presence* present) {
   const StrengthSelection selection = selected_strengths(model, fos);
   // The strength reduction is a stage of no load whose factor is F itself: the yield functions
   // of the reduced strengths are violated at the state carried, and each step's LCP finds the

@@ -16,14 +16,14 @@ StrengthSelection selected_strengths(const Model& model, const FactorOfSafetyOpt
 
 /// F from `start`, the equilibrium state of `model` after its stages. `model` and `points` are
 /// the analysis' (the reduced models share their geometry and K); `present`, if given, the
-/// blocks present (after excavations).
+/// blocks and bolts present (after excavations and installations).
 FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<YieldPoint>& points,
                                      const SparseCholesky& k, const AnalysisState& start,
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,
                                      Timings& timings, const FactorTrialCallback& on_trial = {},
-                                     const std::vector<char>* present = nullptr);
+                                     const Presence* present = nullptr);
 
 /// The stages of a model, run again from the unloaded state with its strengths divided by a
 /// factor: carried (with the state at their end and its largest accumulated plastic slip),

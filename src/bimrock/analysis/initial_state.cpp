@@ -12,7 +12,7 @@
 #include <bimrock/assembly/yield_modes.hpp>
 #include <bimrock/assembly/yield_values.hpp>
 #include <bimrock/model/errors.hpp>
-#include <bimrock/model/stage_blocks.hpp>
+#include <bimrock/model/presence.hpp>
 
 namespace bimrock {
 namespace {
@@ -60,7 +60,7 @@ InitialStressCheck check_initial_stress(const Model& model, const std::vector<Yi
   check.residual = (loads - internal).cwiseAbs().maxCoeff();
   const double scale = std::max(loads.cwiseAbs().maxCoeff(), internal.cwiseAbs().maxCoeff());
   check.relative_residual = scale > 0.0 ? check.residual / scale : 0.0;
-  const std::vector<char> present = blocks_present(model, -1);
+  const Presence present = presence_at(model, -1);
   const YieldEvaluator yield(model, points, &present);
   YieldValues f;
   double stress_scale = 0.0;
@@ -97,6 +97,8 @@ AnalysisState initial_state(const Model& model, const std::vector<YieldPoint>& p
     return s;
   for (std::size_t p = 0; p < points.size(); ++p) {
     const YieldPoint& point = points[p];
+    if (point.is_bolt())
+      continue;  // installed at a stage's start, not standing in the initial state
     const Eigen::MatrixXd d = local_stiffness(model, point);
     const Eigen::Index n = d.rows();
     const Eigen::VectorXd initial = point.initial.head(n);

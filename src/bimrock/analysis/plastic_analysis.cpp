@@ -19,7 +19,10 @@
 #include <bimrock/assembly/global_system.hpp>
 #include <bimrock/assembly/initial_forces.hpp>
 #include <bimrock/assembly/kinematics.hpp>
+#include <bimrock/assembly/yield_modes.hpp>
 #include <bimrock/assembly/yield_values.hpp>
+#include <bimrock/model/presence.hpp>
+#include <bimrock/model/stage_blocks.hpp>
 #include <bimrock/solve/factor_memory.hpp>
 
 namespace bimrock {
@@ -119,30 +122,140 @@ PlasticResult with_statistics(PlasticResult result, const StageStructure& struct
   return result;
 }
 
+// What stands after stage `st`'s excavation, before its bolts: the blocks of the stage, the
+// springs of `before` whose blocks both remain.
+Presence excavated(const Model& model, const Presence& before, int st) {
+  Presence dug{blocks_present(model, st), before.springs};
+  for (std::size_t k = 0; k < dug.springs.size(); ++k) {
+    const BoltSpring& s = model.bolt_springs[k];
+    dug.springs[k] = dug.springs[k] && dug.block(s.block_a) && dug.block(s.block_b);
+  }
+  return dug;
+}
+
+// The pretension of the springs installed now (in `now`, not in `before`) as a load on their
+// blocks: what a jack pulling each bolt's head towards its anchor exerts, -w E^T [T0, 0].
+Eigen::VectorXd jack_loads(const Model& model, const std::vector<YieldPoint>& points,
+                           const YieldPointIndex& index, const Presence& before,
+                           const Presence& now) {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(model.n_dofs());
+  for (std::size_t k = 0; k < model.bolt_springs.size(); ++k) {
+    if (before.springs[k] || !now.springs[k])
+      continue;
+    const YieldPoint& p = points[static_cast<std::size_t>(index.spring_points[k])];
+    const double t0 = bolt_of(model, p).pretension;
+    if (t0 == 0.0)
+      continue;
+    const Eigen::VectorXd on_blocks =
+        -p.weight * local_operator(model, p).e.transpose() * Eigen::Vector2d(t0, 0.0);
+    load.segment<6>(6 * p.block_i) += on_blocks.head<6>();
+    load.segment<6>(6 * p.block_j) += on_blocks.tail<6>();
+  }
+  return load;
+}
+
+// Locks the springs installed now at the displacements u: each carries its pretension along its
+// axis and no shear (docs/formulation.md, "Bolts"), with no plastic part yet.
+void lock_off(const Model& model, std::vector<YieldPoint>& points, const YieldPointIndex& index,
+              const Presence& before, const Presence& now, AnalysisState& state) {
+  for (std::size_t k = 0; k < model.bolt_springs.size(); ++k) {
+    if (before.springs[k] || !now.springs[k])
+      continue;
+    const auto at = static_cast<std::size_t>(index.spring_points[k]);
+    YieldPoint& p = points[at];
+    const Eigen::Vector2d delta = local_strain(model, p, state.u);
+    p.initial.head<2>() =
+        Eigen::Vector2d(bolt_of(model, p).pretension, 0.0) - local_stiffness(model, p) * delta;
+    state.points[at] = PlasticState{};
+  }
+}
+
+// Jacks the pretension `jack` of the bolts installed at stage `st`'s start against what stands
+// (without them), as one load increment recorded in the stage with stage factor 0 (its own loads
+// not yet applied). False, with result.stopped saying why, if it cannot be carried.
+bool carry_pretension(const Model& model, int st, StageStructure& structure,
+                      const Eigen::VectorXd& jack, const PlasticOptions& options,
+                      const CandidateTuning& tuning, IncrementMemory& memory,
+                      const IncrementCallback& on_increment, PlasticResult& result,
+                      int& increment) {
+  Stage jacking;
+  jacking.name = model.stages[static_cast<std::size_t>(st)].name + " (bolt pretension)";
+  const YieldEvaluator yield(model, result.points, &structure.present());
+  const StageContext ctx =
+      stage_context(model, result.points, structure.k(), yield, jacking, jack, result.timings);
+  result.state.stage_factor = 0.0;
+  double jacked = 0.0;  // the fraction of the pretension carried
+  auto part_start = std::chrono::steady_clock::now();
+  const CarryStep carry = [&](const Trial& carried) {
+    const double secs =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - part_start).count();
+    jacked = carried.next.stage_factor;
+    result.state = carried.next;
+    result.state.stage_factor = 0.0;
+    IncrementRecord r = record(model, carried, st, ++increment, secs);
+    r.stage_factor = 0.0;
+    result.history.push_back(std::move(r));
+    if (on_increment)
+      on_increment(result.history.back(), result.state);
+    part_start = std::chrono::steady_clock::now();
+  };
+  const TryStep try_step = [&](double step) {
+    AnalysisState from = result.state;
+    from.stage_factor = jacked;
+    return solve_increment(ctx, from, step, options, tuning, structure.solver(), memory);
+  };
+  const SteppedIncrement done = step_increment(
+      1.0, 0.0, try_step, carry, {options.bracket_tolerance, options.max_bisections, false, false});
+  if (done.outcome == SteppedIncrement::Outcome::carried)
+    return true;
+  const std::string what = done.outcome == SteppedIncrement::Outcome::collapse
+                               ? "the rock fails under " + std::to_string(done.failed) + " of it"
+                               : "it could not be solved accurately beyond " +
+                                     std::to_string(done.carried) + " of it, nor shown to fail";
+  result.stopped = Stop{st, 0.0,
+                        "the pretension of the bolts installed at the stage's start cannot be "
+                        "jacked: " +
+                            what + "; lower their pretension, or install them later"};
+  return false;
+}
+
 // The stages of the model from the unloaded state, into `result` (its points given): every
 // increment carried is recorded; the first collapse or undecided step ends them. `at_stage_end`
 // (if any) is called with each stage carried. A stage that excavates stands on K of the blocks
-// left and releases the forces of the blocks removed (analysis/excavation.hpp).
+// left and releases the forces of the blocks removed (analysis/excavation.hpp); a stage that
+// installs bolts first jacks their pretension against the structure without them, then locks
+// them off and stands on K with them.
 void run_stages(const Model& model, StageStructure& structure, const YieldPointIndex& index,
                 const PlasticOptions& options, const CandidateTuning& tuning,
                 IncrementMemory& memory, const IncrementCallback& on_increment,
                 PlasticResult& result, const std::function<void(int)>& at_stage_end = {}) {
   Eigen::VectorXd unbalanced;  // by the initial stress's points held to their strengths
   result.state = initial_state(model, result.points, unbalanced);
-  structure.stand_on(blocks_present(model, -1));
+  structure.stand_on(presence_at(model, -1));
   Eigen::VectorXd unreleased = Eigen::VectorXd::Zero(model.n_dofs());
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
-    if (!stage.excavated.empty()) {
-      const std::vector<char> present = blocks_present(model, st);
-      unreleased += excavation_forces(model, present, stage.excavated, result.state.u,
-                                      {&index, &result.state.points});
+    const Presence before = structure.present();
+    const Presence dug = excavated(model, before, st);
+    if (dug != before) {
+      unreleased += excavation_forces(model, before, dug, result.state.u,
+                                      {&index, &result.state.points}, result.points);
       for (std::size_t p = 0; p < result.points.size(); ++p)
-        if (!point_present(result.points[p], present))
+        if (!point_present(result.points[p], dug))
           result.state.points[p] = PlasticState{};  // gone with its blocks
-      structure.stand_on(present);
+      structure.stand_on(dug);
     }
-    Eigen::VectorXd load = stage_loads(model, st, structure.present());
+    int increment = 0;
+    const Presence now = presence_at(model, st);
+    if (now != dug) {
+      const Eigen::VectorXd jack = jack_loads(model, result.points, index, dug, now);
+      if (!jack.isZero(0.0) && !carry_pretension(model, st, structure, jack, options, tuning,
+                                                 memory, on_increment, result, increment))
+        return;
+      lock_off(model, result.points, index, dug, now, result.state);
+      structure.stand_on(now);
+    }
+    Eigen::VectorXd load = stage_loads(model, st, structure.present().blocks);
     if (st == 0)
       load += unbalanced;
     load += stage.release * unreleased;
@@ -153,7 +266,6 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
     const double step = (stage.control ? stage.control->displacement : 1.0) / stage.increments;
     result.state.stage_factor = 0.0;
     std::optional<Trial> last;  // the last carried trial of the stage
-    int increment = 0;
     auto part_start = std::chrono::steady_clock::now();
     // Records a carried trial (a whole increment or a part of it) with the time since the last
     // part: the parts' times add up, none counts another's (nor the callback's).

@@ -6,7 +6,7 @@ namespace bimrock {
 StageStructure::StageStructure(const Model& model, const SolverTuning& tuning, Timings& timings)
     : model_(model), tuning_(tuning), timings_(timings) {}
 
-void StageStructure::stand_on(const std::vector<char>& present) {
+void StageStructure::stand_on(const Presence& present) {
   if (k_ && present == present_)
     return;
   retire();

@@ -1,13 +1,15 @@
 #pragma once
-/// @file What the increments of a stage stand on: K of the blocks present, its factor and the
-/// increment solver on it. The analysis factorizes K once, and again only after a stage that
-/// excavates (the blocks present change); a model without excavation keeps its first factor.
+/// @file What the increments of a stage stand on: K of the blocks and bolts present, its factor
+/// and the increment solver on it. The analysis factorizes K once, and again only when what
+/// stands changes (a stage excavates, or installs bolts); a model without either keeps its first
+/// factor.
 #include <memory>
 #include <vector>
 
 #include <bimrock/analysis/timings.hpp>
 #include <bimrock/assembly/global_system.hpp>
 #include <bimrock/model/model.hpp>
+#include <bimrock/model/presence.hpp>
 #include <bimrock/solve/increment_solver.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
 
@@ -17,14 +19,14 @@ class StageStructure {
  public:
   StageStructure(const Model& model, const SolverTuning& tuning, Timings& timings);
 
-  /// Makes K that of the blocks flagged in `present` (per block), assembled and factorized anew
-  /// if they differ from the last ones. Throws ModelError naming a block left free.
-  void stand_on(const std::vector<char>& present);
+  /// Makes K that of what is `present`, assembled and factorized anew if it differs from the
+  /// last. Throws ModelError naming a block left free.
+  void stand_on(const Presence& present);
 
-  [[nodiscard]] const std::vector<char>& present() const { return present_; }
+  [[nodiscard]] const Presence& present() const { return present_; }
   [[nodiscard]] SparseCholesky& k() { return *k_; }
   [[nodiscard]] IncrementSolver& solver() { return *solver_; }
-  /// Factorizations of K for the blocks present (1 without excavation).
+  /// Factorizations of K for what stands (1 without excavation or bolts).
   [[nodiscard]] int factorizations() const { return factorizations_; }
   /// The solves and zones of every factor so far (stiffness_zones.hpp, summed).
   [[nodiscard]] ZoneStatistics zone_statistics() const;
@@ -36,7 +38,7 @@ class StageStructure {
   const Model& model_;
   SolverTuning tuning_;
   Timings& timings_;
-  std::vector<char> present_;
+  Presence present_;
   SparseMatrix lower_;
   std::unique_ptr<SparseCholesky> k_;
   std::unique_ptr<IncrementSolver> solver_;

@@ -12,8 +12,9 @@ namespace bimrock {
 namespace {
 
 // The lower triangle of K in compressed columns, its pattern built from the block graph first
-// (each block couples with itself and with its neighbours across interfaces), so values are
-// added in place: no triplet list five times the size of K.
+// (each block couples with itself, with its neighbours across interfaces and with the blocks its
+// bolts' springs join, whether they stand yet or not: one pattern for every stage), so values
+// are added in place: no triplet list five times the size of K.
 class LowerAssembler {
  public:
   LowerAssembler(const Model& model, SparseMatrix& k) : neighbours_(model.n_blocks()), k_(k) {
@@ -24,6 +25,8 @@ class LowerAssembler {
       const int hi = std::max(f.block_i, f.block_j);
       neighbours_[lo].push_back(hi);
     }
+    for (const BoltSpring& s : model.bolt_springs)
+      neighbours_[std::min(s.block_a, s.block_b)].push_back(std::max(s.block_a, s.block_b));
     const std::int64_t n = model.n_dofs();
     std::int64_t nnz = 0;
     for (int b = 0; b < model.n_blocks(); ++b) {
@@ -87,14 +90,14 @@ class LowerAssembler {
 }  // namespace
 
 SparseMatrix assemble_stiffness_lower(const Model& model) {
-  return assemble_stiffness_lower(model, std::vector<char>(model.blocks.size(), 1));
+  return assemble_stiffness_lower(model, every_block(model));
 }
 
-SparseMatrix assemble_stiffness_lower(const Model& model, const std::vector<char>& present) {
+SparseMatrix assemble_stiffness_lower(const Model& model, const Presence& present) {
   SparseMatrix lower;
   LowerAssembler k(model, lower);
   const double t = model.settings.thickness;
-  const auto here = [&](int b) { return present[static_cast<std::size_t>(b)] != 0; };
+  const auto here = [&](int b) { return present.block(b); };
   for (int b = 0; b < model.n_blocks(); ++b) {
     const Block& block = model.blocks[b];
     const BlockMaterial& material = model.block_materials[block.material];
@@ -115,6 +118,11 @@ SparseMatrix assemble_stiffness_lower(const Model& model, const std::vector<char
       const Vec2& cj = model.blocks[f.block_j].centroid;
       k.add<12>(interface_stiffness(f, ci, cj, t), {f.block_i, f.block_j});
     }
+  }
+  for (std::size_t s = 0; s < model.bolt_springs.size(); ++s) {
+    const BoltSpring& spring = model.bolt_springs[s];
+    if (present.spring(static_cast<int>(s)))
+      k.add<12>(bolt_stiffness(model, spring), {spring.block_a, spring.block_b});
   }
   return lower;
 }

@@ -1,5 +1,6 @@
 #pragma once
-/// @file Block kinematics (eq. 1) and interface relative displacement (eqs. 3-5).
+/// @file Block kinematics (eq. 1) and interface relative displacement (eqs. 3-5), and a bolt
+/// spring's, between a point of each of its blocks.
 /// Block unknowns d = [u0, v0, theta, eps_x, eps_y, gamma_xy] at the centroid (x0, y0);
 /// rotation counter-clockwise positive.
 #include <Eigen/Core>
@@ -36,6 +37,17 @@ inline Mat2x12 interface_B(const Vec2& n, const Vec2& ci, const Vec2& cj, const 
   b.leftCols<6>() = -t * block_Q(ci, p);
   b.rightCols<6>() = t * block_Q(cj, p);
   return b;
+}
+
+/// B of a bolt's spring (docs/formulation.md, "Bolts"): delta = T(axis) (Q_b(b) d_b - Q_a(a)
+/// d_a) = B [d_a; d_b], its elongation along the axis first, then its shear.
+inline Mat2x12 bolt_B(const Vec2& axis, const Vec2& ca, const Vec2& a, const Vec2& cb,
+                      const Vec2& b) {
+  const Eigen::Matrix2d t = interface_T(axis);
+  Mat2x12 out;
+  out.leftCols<6>() = -t * block_Q(ca, a);
+  out.rightCols<6>() = t * block_Q(cb, b);
+  return out;
 }
 
 /// B of a support at point p: the ground does not move, delta = -T Q_i(p) d_i.

@@ -38,4 +38,13 @@ Mat6 support_stiffness(const Interface& f, const Vec2& ci, double thickness) {
   return k;
 }
 
+Mat12 bolt_stiffness(const Model& model, const BoltSpring& s) {
+  const Bolt& bolt = model.bolts[static_cast<std::size_t>(s.bolt)];
+  const Mat2x12 b =
+      bolt_B(s.axis, model.blocks[s.block_a].centroid, s.a, model.blocks[s.block_b].centroid, s.b);
+  const Eigen::Matrix2d d =
+      Eigen::Vector2d(bolt.axial_stiffness, bolt.shear_stiffness).asDiagonal();
+  return bolt.per_model * b.transpose() * d * b;
+}
+
 }  // namespace bimrock

@@ -21,4 +21,8 @@ Mat12 interface_stiffness(const Interface& f, const Vec2& ci, const Vec2& cj, do
 /// The same for a support interface (the ground side has no unknowns).
 Mat6 support_stiffness(const Interface& f, const Vec2& ci, double thickness);
 
+/// The stiffness of one bolt spring times the bolts in the model's thickness (B^T D B, D =
+/// diag(axial, shear)); unknowns ordered [d_a; d_b].
+Mat12 bolt_stiffness(const Model& model, const BoltSpring& s);
+
 }  // namespace bimrock

@@ -10,9 +10,12 @@ LocalOperator local_operator(const Model& model, const YieldPoint& p) {
   LocalOperator op;
   op.blocks = {p.block_i, p.block_j};
   const Vec2& ci = model.blocks[p.block_i].centroid;
-  if (!p.is_interface()) {
+  if (p.is_block()) {
     op.e = Eigen::MatrixXd::Zero(3, 6);
     op.e.rightCols<3>().setIdentity();
+  } else if (p.is_bolt()) {
+    const BoltSpring& s = spring_of(model, p);
+    op.e = bolt_B(s.axis, ci, s.a, model.blocks[p.block_j].centroid, s.b);
   } else if (p.block_j == kGround) {
     op.e = support_B(p.normal, ci, p.position);
   } else {
@@ -22,8 +25,11 @@ LocalOperator local_operator(const Model& model, const YieldPoint& p) {
 }
 
 Eigen::MatrixXd local_stiffness(const Model& model, const YieldPoint& p) {
-  if (!p.is_interface()) {
+  if (p.is_block())
     return elasticity_matrix(model.block_materials[p.material], model.settings.plane);
+  if (p.is_bolt()) {
+    const Bolt& bolt = bolt_of(model, p);
+    return Eigen::Vector2d(bolt.axial_stiffness, bolt.shear_stiffness).asDiagonal();
   }
   const Interface& f = model.interfaces[p.owner];
   return Eigen::Vector2d(f.normal_stiffness, f.shear_stiffness).asDiagonal();
@@ -45,8 +51,12 @@ Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const Plas
 }
 
 ModeKind mode_kind(const YieldPoint& p, int mode) {
-  if (!p.is_interface())
+  if (p.is_block())
     return ModeKind::block_facet;
+  if (p.is_bolt())
+    return mode == 0   ? ModeKind::bolt_tension
+           : mode == 1 ? ModeKind::bolt_shear_positive
+                       : ModeKind::bolt_shear_negative;
   return mode == 0   ? ModeKind::slip_positive
          : mode == 1 ? ModeKind::slip_negative
                      : ModeKind::opening;
@@ -58,6 +68,13 @@ Eigen::Vector3d joint_values(const JointStrength& law, const PlasticState& s, do
   const double c = law.cohesion.value(s.slip);
   const double sigma_t = law.tensile.value(s.max_gap);
   return {tau + sigma_n * tan_phi - c, -tau + sigma_n * tan_phi - c, sigma_n - sigma_t};
+}
+
+Eigen::VectorXd bolt_values(const Bolt& bolt, double axial, double shear) {
+  if (!bolt.shear_capacity)
+    return Eigen::VectorXd::Constant(1, axial - bolt.capacity);
+  return Eigen::Vector3d(axial - bolt.capacity, shear - *bolt.shear_capacity,
+                         -shear - *bolt.shear_capacity);
 }
 
 BlockPlanes block_planes(const BlockStrength& law) {
@@ -116,12 +133,30 @@ LocalYield block_modes(const BlockStrength& law, const Eigen::VectorXd& sigma) {
   return y;
 }
 
+// Associated and perfectly plastic: the bar yields along its axis, the dowel across it.
+LocalYield bolt_modes(const Bolt& bolt, const Eigen::VectorXd& r) {
+  LocalYield y;
+  const Eigen::Index n = bolt.shear_capacity ? 3 : 1;
+  y.a = Eigen::MatrixXd::Zero(n, 2);
+  y.a(0, 0) = 1.0;
+  if (n == 3) {
+    y.a(1, 1) = 1.0;
+    y.a(2, 1) = -1.0;
+  }
+  y.g = y.a;
+  y.f = bolt_values(bolt, r(0), r(1));
+  y.h = Eigen::MatrixXd::Zero(n, n);
+  return y;
+}
+
 }  // namespace
 
 LocalYield linearize(const Model& model, const YieldPoint& p, const PlasticState& s,
                      const Eigen::VectorXd& stress) {
   if (p.is_interface())
     return joint_modes(*model.joint_materials[p.material].strength, s, stress);
+  if (p.is_bolt())
+    return bolt_modes(bolt_of(model, p), stress);
   return block_modes(*model.block_materials[p.material].strength, stress);
 }
 

@@ -13,6 +13,7 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
   if (index) {
     index->interface_points.assign(model.interfaces.size(), {-1, -1});
     index->block_points.assign(model.blocks.size(), -1);
+    index->spring_points.assign(model.bolt_springs.size(), -1);
   }
   const double t = model.settings.thickness;
   // Merge key: the two blocks and the point, snapped to the model tolerance.
@@ -54,12 +55,22 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
                                        Vec2::Zero(), t * block.area, block.material});
     p.initial = block_initial_stress(model, b);
   }
+  for (int s = 0; s < static_cast<int>(model.bolt_springs.size()); ++s) {
+    const BoltSpring& spring = model.bolt_springs[static_cast<std::size_t>(s)];
+    if (index)
+      index->spring_points[static_cast<std::size_t>(s)] = static_cast<int>(points.size());
+    points.push_back(YieldPoint{YieldPoint::Kind::bolt, s, spring.block_a, spring.block_b, spring.a,
+                                spring.axis,
+                                model.bolts[static_cast<std::size_t>(spring.bolt)].per_model, -1});
+  }
   return points;
 }
 
 int n_modes(const Model& model, const YieldPoint& p) {
   if (p.is_interface())
     return 3;
+  if (p.is_bolt())
+    return bolt_of(model, p).shear_capacity ? 3 : 1;
   return model.block_materials[p.material].strength->planes;
 }
 

@@ -8,7 +8,7 @@
 namespace bimrock {
 
 YieldEvaluator::YieldEvaluator(const Model& model, const std::vector<YieldPoint>& points,
-                               const std::vector<char>* present)
+                               const Presence* present)
     : model_(model), points_(points), absent_(points.size(), 0) {
   first_.reserve(points.size() + 1);
   first_.push_back(0);
@@ -43,7 +43,14 @@ void YieldEvaluator::evaluate(const std::vector<PlasticState>& states, const Eig
     }
     const Vec2& ci = model_.blocks[point.block_i].centroid;
     const Vec6 di = u.segment<6>(6 * point.block_i);
-    if (point.is_interface()) {
+    if (point.is_bolt()) {
+      const Eigen::Vector2d force = local_stress(model_, point, s, u);
+      const Bolt& bolt = bolt_of(model_, point);
+      out.f.segment(at, first_[p + 1] - at) = bolt_values(bolt, force(0), force(1));
+      if (scale)
+        largest = std::max({largest, force.cwiseAbs().maxCoeff(), bolt.capacity,
+                            bolt.shear_capacity.value_or(0.0)});
+    } else if (point.is_interface()) {
       // The relative displacement (eq. 5), less its plastic part, on the springs.
       Eigen::Vector2d delta;
       if (point.block_j == kGround) {

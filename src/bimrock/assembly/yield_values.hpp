@@ -27,22 +27,21 @@ struct YieldValues {
 };
 
 /// The value of every yield function of a point that is absent (its block or one of its
-/// interface's blocks excavated): far below any tolerance, so it is never violated nor a
-/// candidate.
+/// interface's blocks excavated, a bolt not installed): far below any tolerance, so it is never
+/// violated nor a candidate.
 inline constexpr double kAbsentPoint = -1e300;
 
 /// Evaluates the yield functions of a fixed set of points (what depends only on the materials,
 /// such as the planes of a block's criterion, is worked out once).
 class YieldEvaluator {
  public:
-  /// @param present if given, the blocks present (per block): points of absent ones get
-  ///   kAbsentPoint
+  /// @param present if given, what stands: the points of what does not get kAbsentPoint
   YieldEvaluator(const Model& model, const std::vector<YieldPoint>& points,
-                 const std::vector<char>* present = nullptr);
+                 const Presence* present = nullptr);
 
   /// f at the unknowns u, with each point's plastic state. `scale`, if given, is raised to the
   /// largest stress component and the largest strength (c, sigma_t, or a block's c cos(phi))
-  /// met: the scale of the yield tolerance.
+  /// met, and a bolt spring's forces and capacities [N]: the scale of the yield tolerance.
   void evaluate(const std::vector<PlasticState>& states, const Eigen::VectorXd& u, YieldValues& out,
                 double* scale = nullptr) const;
 

@@ -42,7 +42,7 @@ class LcpOnZone final : public LcpColumns {
   }
   [[nodiscard]] int group_rank(Eigen::Index row) const override {
     const int point = sys_.rows[static_cast<std::size_t>(row)].point;
-    return points_[static_cast<std::size_t>(point)].is_interface() ? 2 : 3;
+    return points_[static_cast<std::size_t>(point)].is_block() ? 3 : 2;
   }
   // Associated flow (C = Phi^T, N symmetric) under load control: M is symmetric (the control
   // term is not). Checked on first use only.
