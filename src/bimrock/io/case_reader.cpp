@@ -114,6 +114,13 @@ Case read_document(const YAML::Node& doc, const std::string& file) {
           "analysis, with loads, starts unstressed)");
     s.initial_stress = read_initial_stress(*v);
   }
+  if (const auto v = m.find("bolts")) {
+    if (!m.has("stages"))
+      v->fail(
+          "are installed at the start of a stage: give stages (an elastic analysis, with "
+          "loads, has no bolts)");
+    s.bolts = read_bolts(*v);
+  }
   if (const auto v = m.find("factor_of_safety")) {
     if (!m.has("stages"))
       v->fail("a factor of safety is sought after the stages of a nonlinear analysis: give stages");

@@ -54,6 +54,9 @@ std::vector<StageSpec> read_stages(const Value& v);
 // case_initial_stress.cpp: initial_stress.
 InitialStressSpec read_initial_stress(const Value& v);
 
+// case_bolts.cpp: bolts.
+std::vector<BoltSpec> read_bolts(const Value& v);
+
 // case_monitors.cpp: monitors.
 std::vector<MonitorSpec> read_monitors(const Value& v);
 

@@ -3,6 +3,7 @@
 #include <map>
 
 #include <bimrock/model/block_generation.hpp>
+#include <bimrock/model/bolts.hpp>
 #include <bimrock/model/limits.hpp>
 #include <bimrock/model/model.hpp>
 #include <bimrock/model/stage_blocks.hpp>
@@ -515,6 +516,7 @@ class Builder {
     }
     resolve_stage_blocks(model_, spec_.stages);
     add_initial_stress();
+    add_bolts(model_, spec_.bolts);
   }
 
   // The stress before the first stage: a nonlinear analysis only, its values finite.
