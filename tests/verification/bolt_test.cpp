@@ -1,0 +1,189 @@
+// Rock bolts against closed forms. Two unit squares stacked on a fixed base, the joint between
+// them and a bolt through it (docs/formulation.md, "Bolts"). The blocks are 10^6 times stiffer
+// than the joint (E t / h = 1e14 N/m against k_n t L = 1e8 N/m), so the joint and the bolt are the
+// only compliances: the closed forms neglect the blocks' share, 1e-6 of the joint's, and the
+// tolerances are 1e-5 relative where they do (1e-9 where equilibrium alone decides).
+// - Pretension: the upper block's equilibrium makes the joint's compression equal to the
+//   bolts' pretension (w T0, w bolts in the model's thickness).
+// - A pull P on the upper block: the joint (k_j) and the bolts (w k_b) share it while the joint is
+//   closed, so the joint's compression falls as w T0 - P k_j / (k_j + w k_b) and the joint opens at
+//   P = w T0 (1 + w k_b / k_j), the separation load of a preloaded bolted joint; opened, the
+//   bolts carry P alone and yield at P = w N_y, where the block lifts off (a collapse).
+// - A grouted bolt across a joint that slides (Tresca, c): the block slides at H = c L t + w V_y.
+// Units: SI.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include <bimrock/analysis/field_results.hpp>
+#include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/assembly/yield_modes.hpp>
+#include <bimrock/model/model.hpp>
+
+#include "support/cases.hpp"
+
+namespace bimrock {
+namespace {
+
+constexpr double kJointStiffness = 1e8;  // k_n = k_s [Pa/m]; k_j = k_n t L [N/m]
+constexpr double kBoltStiffness = 1e7;   // k_b [N/m], per bolt
+constexpr double kPretension = 1e5;      // T0 [N], per bolt
+constexpr double kCapacity = 3e5;        // N_y [N], per bolt
+constexpr double kSpacing = 0.5;         // [m]: w = t / spacing = 2 bolts in the model
+constexpr double kBolts = 2.0;           // w
+constexpr double kJointCohesion = 1e4;        // [Pa]
+
+// The two squares [0, 1] x [0, 1] and [0, 1] x [1, 2] on a fixed base, the joint between them
+// with a tension cut-off at 0 and cohesion (friction 0: a Tresca joint, associated); stages
+// `stages`. No gravity.
+Model stacked(const std::vector<StageSpec>& stages, double tensile = 0.0) {
+  CaseSpec c;
+  c.file = "stacked";
+  c.block_materials = {testing::rock(1e14, 0.0)};
+  JointMaterial joint = testing::springs("joint", kJointStiffness, kJointStiffness);
+  JointStrength s;
+  s.cohesion = Softening::constant(kJointCohesion);
+  s.tensile = Softening::constant(tensile);
+  joint.strength = s;
+  c.joint_materials = {joint};
+  c.default_joint = "joint";
+  c.blocks = testing::blocks_of({Polygon{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
+                                 Polygon{{{0, 1}, {1, 1}, {1, 2}, {0, 2}}}});
+  c.supports = {testing::fixed({0, 0}, {1, 0})};
+  c.stages = stages;
+  return build_model(c);
+}
+
+int upper_block(const Model& m) { return m.blocks[0].centroid.y() > 1.0 ? 0 : 1; }
+
+// An anchored bolt from the top of the upper block to the lower block's centre, installed at
+// stage 0.
+void bolt_through(Model& m, double pretension) {
+  Bolt b;
+  b.name = "anchor";
+  b.from = Vec2(0.5, 2.0);
+  b.to = Vec2(0.5, 0.5);
+  b.axial_stiffness = kBoltStiffness;
+  b.capacity = kCapacity;
+  b.pretension = pretension;
+  b.per_model = 1.0 / kSpacing;
+  m.bolts = {b};
+  const int up = upper_block(m);
+  m.bolt_springs = {BoltSpring{0, up, 1 - up, b.from, b.to, Vec2(0.0, -1.0)}};
+}
+
+StageSpec stage(const std::string& name, int increments, Vec2 force = Vec2::Zero()) {
+  StageSpec st{name, {}, increments, std::nullopt, {0, "stages[]"}};
+  if (force.squaredNorm() > 0.0)
+    st.loads.points = {PointLoadSpec{Vec2(0.5, 1.5), force, {0, "stages[].loads.points[0]"}}};
+  return st;
+}
+
+// The joint's normal force [N] (tension positive): t integral sigma_n ds.
+double joint_normal_force(const Model& m, const PlasticResult& r, const YieldPointIndex& index) {
+  for (int k = 0; k < m.n_interfaces(); ++k) {
+    const Interface& f = m.interfaces[k];
+    if (f.is_support())
+      continue;
+    const InterfaceState s = interface_state(m, k, r.state.u, {&index, &r.state.points});
+    return m.settings.thickness * 0.5 * f.segment.length() * (s[0].stress(0) + s[1].stress(0));
+  }
+  return NAN;
+}
+
+Eigen::Vector2d bolt_force(const Model& m, const PlasticResult& r) {
+  for (std::size_t p = 0; p < r.points.size(); ++p)
+    if (r.points[p].is_bolt())
+      return local_stress(m, r.points[p], r.state.points[p], r.state.u);
+  return {NAN, NAN};
+}
+
+TEST(Bolt, PretensionCompressesTheJointByItsForce) {
+  Model m = stacked({stage("install", 1)});
+  bolt_through(m, kPretension);
+  YieldPointIndex index;
+  static_cast<void>(make_yield_points(m, &index));
+  const PlasticResult r = run_plastic_analysis(m, {});
+  ASSERT_FALSE(r.collapse);
+  ASSERT_FALSE(r.stopped);
+  EXPECT_NEAR(bolt_force(m, r)(0), kPretension, 1e-9 * kPretension);
+  EXPECT_NEAR(joint_normal_force(m, r, index), -kBolts * kPretension, 1e-9 * kPretension);
+  // The upper block moved down by the compression over the joint's stiffness (rigid blocks).
+  const Vec2 head = displacement_at(m, upper_block(m), Vec2(0.5, 2.0), r.state.u);
+  EXPECT_NEAR(head.y(), -kBolts * kPretension / kJointStiffness, 1e-5 * kPretension / 1e8);
+}
+
+// The gap of the joint's points after pulling the upper block up by `pull` [N].
+PlasticResult pulled(double pull, int increments = 1) {
+  Model m = stacked({stage("install", 1), stage("pull", increments, Vec2(0.0, pull))});
+  bolt_through(m, kPretension);
+  return run_plastic_analysis(m, {});
+}
+
+bool joint_open(const PlasticResult& r) {
+  for (std::size_t p = 0; p < r.points.size(); ++p)
+    if (r.points[p].is_interface() && r.state.points[p].gap > 0.0)
+      return true;
+  return false;
+}
+
+TEST(Bolt, APullOpensThePretensionedJointAtTheSeparationLoad) {
+  const double k_j = kJointStiffness * 1.0 * 1.0;
+  const double separation = kBolts * kPretension * (1.0 + kBolts * kBoltStiffness / k_j);
+  const PlasticResult below = pulled(0.999 * separation);
+  ASSERT_FALSE(below.collapse);
+  EXPECT_FALSE(joint_open(below));
+  // Closed, the joint and the bolts share the pull by their stiffnesses.
+  Model m = stacked({stage("install", 1), stage("pull", 1, Vec2(0.0, 0.999 * separation))});
+  bolt_through(m, kPretension);
+  const double lift = 0.999 * separation / (k_j + kBolts * kBoltStiffness);
+  EXPECT_NEAR(bolt_force(m, below)(0), kPretension + kBoltStiffness * lift, 1e-5 * kPretension);
+  const PlasticResult above = pulled(1.001 * separation);
+  ASSERT_FALSE(above.collapse);
+  EXPECT_TRUE(joint_open(above));
+  // Open, the bolts carry the pull alone.
+  Model n = stacked({stage("install", 1), stage("pull", 1, Vec2(0.0, 1.001 * separation))});
+  bolt_through(n, kPretension);
+  EXPECT_NEAR(bolt_force(n, above)(0), 1.001 * separation / kBolts, 1e-9 * kPretension);
+}
+
+TEST(Bolt, ThePulledBlockLiftsOffWhenTheBoltsYield) {
+  const double pull = 2.0 * kBolts * kCapacity;
+  const PlasticResult r = pulled(pull, 8);
+  ASSERT_TRUE(r.collapse);
+  EXPECT_EQ(r.collapse->stage, 1);
+  const double lift_off = kBolts * kCapacity / pull;  // stage factor 0.5
+  EXPECT_LE(r.collapse->carried, lift_off * (1.0 + 1e-9));
+  EXPECT_GE(r.collapse->failed, lift_off * (1.0 - 1e-9));
+  EXPECT_LT(r.collapse->failed - r.collapse->carried, 2e-4 * lift_off);
+}
+
+TEST(Bolt, AGroutedBoltAddsItsShearCapacityToTheJoints) {
+  const double shear_capacity = 5e3;
+  const double sliding = kJointCohesion * 1.0 * 1.0 + kBolts * shear_capacity;  // H = c L t + w V_y
+  const double push = 2.0 * sliding;
+  // No tension cut-off in the way: the push's moment must not open the joint.
+  Model m = stacked({stage("push", 10, Vec2(push, 0.0))}, 1e9);
+  Bolt b;
+  b.name = "dowel";
+  b.kind = BoltSpec::Kind::grouted;
+  b.from = Vec2(0.5, 2.0);
+  b.to = Vec2(0.5, 0.5);
+  b.axial_stiffness = 1e8;
+  b.shear_stiffness = 1e7;
+  b.capacity = 1e6;
+  b.shear_capacity = shear_capacity;
+  b.per_model = kBolts;
+  m.bolts = {b};
+  const int up = upper_block(m);
+  m.bolt_springs = {BoltSpring{0, up, 1 - up, Vec2(0.5, 1.0), Vec2(0.5, 1.0), Vec2(0.0, -1.0)}};
+  const PlasticResult r = run_plastic_analysis(m, {});
+  ASSERT_TRUE(r.collapse);
+  const double at = sliding / push;
+  EXPECT_LE(r.collapse->carried, at * (1.0 + 1e-9));
+  EXPECT_GE(r.collapse->failed, at * (1.0 - 1e-9));
+  EXPECT_LT(r.collapse->failed - r.collapse->carried, 2e-4 * at);
+}
+
+}  // namespace
+}  // namespace bimrock
