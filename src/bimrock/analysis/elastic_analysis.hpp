@@ -12,6 +12,7 @@ struct ElasticSolution {
   Eigen::VectorXd u;  ///< all block unknowns
   std::vector<BlockState> blocks;
   std::vector<InterfaceState> interfaces;
+  std::vector<SpringState> springs;  ///< per bolt spring (a nonlinear analysis' stage)
   Eigen::Vector3d mean_strain = Eigen::Vector3d::Zero();
   std::vector<Vec2> monitor_displacements;  ///< in the order of Model::monitors
   long factor_nonzeros = 0;

@@ -47,6 +47,33 @@ InterfaceState interface_state(const Model& model, int interface, const Eigen::V
   return state;
 }
 
+std::vector<SpringState> spring_states(const Model& model, const std::vector<char>& standing,
+                                       const Eigen::VectorXd& u, const PlasticParts& plastic) {
+  std::vector<SpringState> out(model.bolt_springs.size());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    if (!standing[k] || !plastic.index)
+      continue;
+    const BoltSpring& s = model.bolt_springs[k];
+    const Bolt& bolt = model.bolts[static_cast<std::size_t>(s.bolt)];
+    const PlasticState& ps =
+        (*plastic.states)[static_cast<std::size_t>(plastic.index->spring_points[k])];
+    Eigen::Matrix<double, 12, 1> d;
+    d << u.segment<6>(6 * s.block_a), u.segment<6>(6 * s.block_b);
+    SpringState& r = out[k];
+    r.standing = true;
+    r.delta = bolt_B(s.axis, model.blocks[s.block_a].centroid, s.a,
+                     model.blocks[s.block_b].centroid, s.b) *
+                  d -
+              ps.installed_at;
+    r.plastic = ps.plastic.head<2>();
+    r.force = Eigen::Vector2d(bolt.pretension, 0.0) +
+              Eigen::Vector2d(bolt.axial_stiffness, bolt.shear_stiffness)
+                  .cwiseProduct(r.delta - r.plastic);
+    r.yielded = ps.slip > 0.0;
+  }
+  return out;
+}
+
 double total_area(const Model& model) {
   double a = 0.0;
   for (const Block& b : model.blocks)

@@ -31,6 +31,15 @@ struct InterfacePointState {
 /// Both integration points of the interface's rule.
 using InterfaceState = std::array<InterfacePointState, 2>;
 
+/// A bolt spring (docs/formulation.md, "Bolts"), per bolt.
+struct SpringState {
+  bool standing = false;  ///< installed, its two blocks present; else the rest is zero
+  Eigen::Vector2d delta = Eigen::Vector2d::Zero();  ///< [elongation, shear] since installation [m]
+  Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< [axial, shear] [N]; axial > 0 is tension
+  Eigen::Vector2d plastic = Eigen::Vector2d::Zero();  ///< plastic [elongation, shear] [m]
+  bool yielded = false;                               ///< it has flowed plastically
+};
+
 /// Plastic parts to subtract from the elastic strains, where a nonlinear analysis has them:
 /// `plastic` of the yield point at each block / interface integration point (see
 /// YieldPointIndex), or none.
@@ -43,6 +52,10 @@ BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u,
                        const PlasticParts& plastic = {});
 InterfaceState interface_state(const Model& model, int interface, const Eigen::VectorXd& u,
                                const PlasticParts& plastic = {});
+
+/// Every bolt spring's state; `standing` (per spring) says which stand.
+std::vector<SpringState> spring_states(const Model& model, const std::vector<char>& standing,
+                                       const Eigen::VectorXd& u, const PlasticParts& plastic);
 
 /// Displacement u = Q(p) d of a block at point p (eq. 1).
 Vec2 displacement_at(const Model& model, int block, const Vec2& p, const Eigen::VectorXd& u);

@@ -154,19 +154,17 @@ Eigen::VectorXd jack_loads(const Model& model, const std::vector<YieldPoint>& po
   return load;
 }
 
-// Locks the springs installed now at the displacements u: each carries its pretension along its
-// axis and no shear (docs/formulation.md, "Bolts"), with no plastic part yet.
-void lock_off(const Model& model, std::vector<YieldPoint>& points, const YieldPointIndex& index,
-              const Presence& before, const Presence& now, AnalysisState& state) {
+// Locks the springs installed now at the displacements u: from here each carries its pretension
+// (YieldPoint::initial) plus what its own displacement adds (docs/formulation.md, "Bolts").
+void lock_off(const Model& model, const std::vector<YieldPoint>& points,
+              const YieldPointIndex& index, const Presence& before, const Presence& now,
+              AnalysisState& state) {
   for (std::size_t k = 0; k < model.bolt_springs.size(); ++k) {
     if (before.springs[k] || !now.springs[k])
       continue;
     const auto at = static_cast<std::size_t>(index.spring_points[k]);
-    YieldPoint& p = points[at];
-    const Eigen::Vector2d delta = local_strain(model, p, state.u);
-    p.initial.head<2>() =
-        Eigen::Vector2d(bolt_of(model, p).pretension, 0.0) - local_stiffness(model, p) * delta;
     state.points[at] = PlasticState{};
+    state.points[at].installed_at = local_strain(model, points[at], state.u);
   }
 }
 

@@ -45,7 +45,9 @@ Eigen::VectorXd local_strain(const Model& model, const YieldPoint& p, const Eige
 
 Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const PlasticState& s,
                              const Eigen::VectorXd& u) {
-  const Eigen::VectorXd strain = local_strain(model, p, u);
+  Eigen::VectorXd strain = local_strain(model, p, u);
+  if (p.is_bolt())
+    strain -= s.installed_at;
   return p.initial.head(strain.size()) +
          local_stiffness(model, p) * (strain - s.plastic.head(strain.size()));
 }

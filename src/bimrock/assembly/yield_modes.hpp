@@ -29,7 +29,8 @@ Eigen::MatrixXd local_stiffness(const Model& model, const YieldPoint& p);
 Eigen::VectorXd local_strain(const Model& model, const YieldPoint& p, const Eigen::VectorXd& u);
 
 /// The stress (R = [sigma_n, tau] or [sigma_x, sigma_y, tau_xy]; a bolt spring's [axial,
-/// shear] force) for the unknowns u: the initial stress plus the elastic part's.
+/// shear] force) for the unknowns u: the initial stress plus the elastic part's (a bolt spring's
+/// displacement counted from its installation).
 Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const PlasticState& s,
                              const Eigen::VectorXd& u);
 

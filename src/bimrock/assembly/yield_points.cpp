@@ -59,9 +59,11 @@ std::vector<YieldPoint> make_yield_points(const Model& model, YieldPointIndex* i
     const BoltSpring& spring = model.bolt_springs[static_cast<std::size_t>(s)];
     if (index)
       index->spring_points[static_cast<std::size_t>(s)] = static_cast<int>(points.size());
-    points.push_back(YieldPoint{YieldPoint::Kind::bolt, s, spring.block_a, spring.block_b, spring.a,
-                                spring.axis,
-                                model.bolts[static_cast<std::size_t>(spring.bolt)].per_model, -1});
+    const Bolt& bolt = model.bolts[static_cast<std::size_t>(spring.bolt)];
+    YieldPoint& p =
+        points.emplace_back(YieldPoint{YieldPoint::Kind::bolt, s, spring.block_a, spring.block_b,
+                                       spring.a, spring.axis, bolt.per_model, -1});
+    p.initial(0) = bolt.pretension;
   }
   return points;
 }

@@ -27,10 +27,9 @@ struct YieldPoint {
   /// thickness [-] for bolt springs
   double weight = 0.0;
   int material = 0;  ///< joint or block material index (none for a bolt spring)
-  /// The stress at zero displacement (model/initial_stress.hpp): [sigma_n, tau, 0] for an
-  /// interface, [sigma_x, sigma_y, tau_xy] for a block [Pa]; [axial, shear, 0] [N] for a bolt
-  /// spring, set at its installation (plastic_analysis.cpp) so that its force is then its
-  /// pretension.
+  /// The stress before any displacement (model/initial_stress.hpp): [sigma_n, tau, 0] for an
+  /// interface, [sigma_x, sigma_y, tau_xy] for a block [Pa]; a bolt spring's force at its
+  /// installation, [pretension, 0, 0] [N].
   Eigen::Vector3d initial = Eigen::Vector3d::Zero();
 
   [[nodiscard]] bool is_interface() const { return kind == Kind::interface; }

@@ -150,6 +150,44 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
     cairo_line_to(cr, f.x(b.x()), f.y(b.y()));
     cairo_stroke(cr);
   }
+  // Each bolt standing as a thin line from its head to its far end, each moving with its block;
+  // then its springs in colour.
+  for (std::size_t k = 0; k < pic.bolt_use.size(); ++k) {
+    const BoltSpring& s = m.bolt_springs[k];
+    const bool first = k == 0 || m.bolt_springs[k - 1].bolt != s.bolt;
+    if (!first || std::isnan(pic.bolt_use[k]))
+      continue;
+    std::size_t last = k;
+    while (last + 1 < m.bolt_springs.size() && m.bolt_springs[last + 1].bolt == s.bolt)
+      ++last;
+    const Bolt& bolt = m.bolts[static_cast<std::size_t>(s.bolt)];
+    const Vec2 a = moved(m, s.block_a, bolt.from, pic.u, magnify);
+    const Vec2 b = moved(m, m.bolt_springs[last].block_b, bolt.to, pic.u, magnify);
+    cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
+    cairo_set_line_width(cr, 1.0);
+    cairo_move_to(cr, f.x(a.x()), f.y(a.y()));
+    cairo_line_to(cr, f.x(b.x()), f.y(b.y()));
+    cairo_stroke(cr);
+  }
+  for (std::size_t k = 0; k < pic.bolt_use.size(); ++k) {
+    if (std::isnan(pic.bolt_use[k]))
+      continue;
+    const BoltSpring& s = m.bolt_springs[k];
+    const double use = std::clamp(pic.bolt_use[k], 0.0, 1.0);
+    const Vec2 a = moved(m, s.block_a, s.a, pic.u, magnify);
+    const Vec2 b = moved(m, s.block_b, s.b, pic.u, magnify);
+    cairo_set_source_rgb(cr, 0.1 + 0.8 * use, 0.6 * (1.0 - use), 0.1);
+    cairo_set_line_width(cr, 1.5 + 2.0 * use);
+    if (s.a == s.b) {  // a grouted bolt's spring at a joint: a dot between its blocks' points
+      const Vec2 c = 0.5 * (a + b);
+      cairo_arc(cr, f.x(c.x()), f.y(c.y()), 3.0 + 3.0 * use, 0.0, 2.0 * M_PI);
+      cairo_fill(cr);
+      continue;
+    }
+    cairo_move_to(cr, f.x(a.x()), f.y(a.y()));
+    cairo_line_to(cr, f.x(b.x()), f.y(b.y()));
+    cairo_stroke(cr);
+  }
   draw_water_surface(cr, pic.water_surface, f);
   cairo_set_source_rgb(cr, 0, 0, 0);
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
@@ -184,6 +222,25 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
     cairo_text_extents_t e;
     cairo_text_extents(cr, text, &e);
     x += e.x_advance + 30;
+  }
+  if (!pic.bolt_use.empty()) {
+    cairo_set_source_rgb(cr, 0.1, 0.6, 0.1);
+    cairo_set_line_width(cr, 2.0);
+    cairo_move_to(cr, x, base - 5);
+    cairo_line_to(cr, x + 14, base - 5);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0.9, 0.0, 0.1);
+    cairo_set_line_width(cr, 3.5);
+    cairo_move_to(cr, x + 16, base - 5);
+    cairo_line_to(cr, x + 30, base - 5);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    const char* legend = "bolt force: 0 to capacity";
+    cairo_move_to(cr, x + 36, base);
+    cairo_show_text(cr, legend);
+    cairo_text_extents_t e;
+    cairo_text_extents(cr, legend, &e);
+    x += 36 + e.x_advance + 30;
   }
   if (m.block_materials.size() > 1)
     for (std::size_t k = 0; k < m.block_materials.size(); ++k) {

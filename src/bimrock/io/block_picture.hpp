@@ -29,6 +29,11 @@ struct BlockPicture {
   /// Per block, whether it is drawn (empty: all): excavated blocks show only as the grey outline
   /// of the undisplaced model.
   std::vector<char> present{};
+  /// Per bolt spring, the share of its tensile capacity its axial force uses (NaN: not standing;
+  /// empty: no bolts drawn). A bolt is a thin line from its head to its far end; its springs are
+  /// drawn over it, green when slack, red at their capacity (an anchored bolt's one spring as a
+  /// line, a grouted bolt's, at the joints it crosses, as dots).
+  std::vector<double> bolt_use{};
 };
 
 /// The length of a picture's scale bar for a drawing `width` wide [m]: the largest 1, 2 or 5

@@ -11,6 +11,7 @@
 #include <bimrock/io/mechanism_table.hpp>
 #include <bimrock/io/run_summary.hpp>
 #include <bimrock/io/state_tables.hpp>
+#include <bimrock/model/bolts.hpp>
 #include <bimrock/model/stage_blocks.hpp>
 
 namespace bimrock {
@@ -37,6 +38,10 @@ void write_final_state(const Model& model, const ElasticSolution& fields,
     write_blocks_csv(model, fields, folder / "blocks.csv");
     write_interfaces_csv(model, fields, folder / "interfaces.csv");
     files.insert(files.end(), {"blocks.csv", "interfaces.csv"});
+    if (!model.bolts.empty()) {
+      write_bolts_csv(model, fields, folder / "bolts.csv");
+      files.push_back("bolts.csv");
+    }
   }
 }
 
@@ -117,21 +122,25 @@ double vtu_points(const Model& model) {
   double vertices = 0.0;
   for (const Block& b : model.blocks)
     vertices += static_cast<double>(b.polygon.vertices.size());
-  return vertices + 2.0 * model.n_interfaces();
+  return vertices + 2.0 * (model.n_interfaces() + static_cast<double>(model.bolt_springs.size()));
+}
+
+// Blocks, interfaces and bolt springs (all springs: at most, they stand).
+double vtu_cells(const Model& model) {
+  return model.n_blocks() + model.n_interfaces() + static_cast<double>(model.bolt_springs.size());
 }
 
 }  // namespace
 
 double estimate_vtu_step_bytes(const Model& model) {
-  const double cells = model.n_blocks() + model.n_interfaces();
   // A .vtu step (vtk_writer.cpp), Base64 (4/3): per point its coordinates, displacement and
-  // connectivity (7 x 8 bytes); per cell its offset, type and 20 numbers of cell data.
-  return 4.0 / 3.0 * (56.0 * vtu_points(model) + 169.0 * cells) + 4096.0;
+  // connectivity (7 x 8 bytes); per cell its offset, type and 23 numbers of cell data.
+  return 4.0 / 3.0 * (56.0 * vtu_points(model) + 193.0 * vtu_cells(model)) + 4096.0;
 }
 
 double estimate_output_bytes(const Model& model, const OutputOptions& options) {
   const double points = vtu_points(model);
-  const double cells = model.n_blocks() + model.n_interfaces();
+  const double cells = vtu_cells(model);
   const double step = estimate_vtu_step_bytes(model);
   double increments = 0.0;
   for (const Stage& s : model.stages)
@@ -191,30 +200,34 @@ PlasticResultsWriter::PlasticResultsWriter(const Model& model, OutputOptions opt
     AnalysisState start;
     start.u = Eigen::VectorXd::Zero(model_.n_dofs());
     start.points.assign(n_points, PlasticState{});
-    write_vtu(model_, fields_of(start), {&index_, &start.points}, folder_.path() / step_file(0));
+    write_vtu(model_, fields_of(start, -1), {&index_, &start.points},
+              folder_.path() / step_file(0));
     steps_.push_back({0.0, step_file(0)});
   }
 }
 
-ElasticSolution PlasticResultsWriter::fields_of(const AnalysisState& state) const {
+ElasticSolution PlasticResultsWriter::fields_of(const AnalysisState& state, int stage) const {
   ElasticSolution fields;
   fields.u = state.u;
   evaluate_fields(model_, fields, {&index_, &state.points});
+  fields.springs =
+      spring_states(model_, springs_present(model_, stage), state.u, {&index_, &state.points});
   return fields;
 }
 
-void PlasticResultsWriter::on_increment(const IncrementRecord& /*record*/,
-                                        const AnalysisState& state) {
+void PlasticResultsWriter::on_increment(const IncrementRecord& record, const AnalysisState& state) {
   ++carried_;
   if (!options_.vtk)
     return;
   if (carried_ % options_.vtk_every != 0) {
     unwritten_ = state;  // written in finish() if it is the last
+    unwritten_stage_ = record.stage;
     return;
   }
   unwritten_.reset();
   const std::size_t step = steps_.size();
-  write_vtu(model_, fields_of(state), {&index_, &state.points}, folder_.path() / step_file(step));
+  write_vtu(model_, fields_of(state, record.stage), {&index_, &state.points},
+            folder_.path() / step_file(step));
   steps_.push_back({static_cast<double>(carried_), step_file(step)});
 }
 
@@ -222,12 +235,16 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
   const fs::path& dir = folder_.path();
   if (unwritten_) {  // the last carried increment, which thinning skipped
     const std::size_t step = steps_.size();
-    write_vtu(model_, fields_of(*unwritten_), {&index_, &unwritten_->points},
+    write_vtu(model_, fields_of(*unwritten_, unwritten_stage_), {&index_, &unwritten_->points},
               dir / step_file(step));
     steps_.push_back({static_cast<double>(carried_), step_file(step)});
     unwritten_.reset();
   }
-  ElasticSolution fields = fields_of(result.state);
+  // The stage the run ended in: where it collapsed or stopped, else the last.
+  const int stage = result.collapse  ? result.collapse->stage
+                    : result.stopped ? result.stopped->stage
+                                     : static_cast<int>(model_.stages.size()) - 1;
+  ElasticSolution fields = fields_of(result.state, stage);
   fields.timings = result.timings;
   std::vector<std::string> files;
   write_final_state(model_, fields, options_, dir, files);
@@ -255,10 +272,13 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
     files.push_back("results.pvd");
   }
   if (model_.n_blocks() <= kMaxPictureBlocks) {
-    const int stage =
-        result.collapse ? result.collapse->stage : static_cast<int>(model_.stages.size()) - 1;
     // The blocks standing at the end (an excavated block keeps the displacement it had).
     const std::vector<char> present = blocks_present(model_, stage);
+    std::vector<double> bolt_use(fields.springs.size(), NAN);
+    for (std::size_t k = 0; k < bolt_use.size(); ++k)
+      if (fields.springs[k].standing)
+        bolt_use[k] = fields.springs[k].force(0) /
+                      model_.bolts[static_cast<std::size_t>(model_.bolt_springs[k].bolt)].capacity;
     write_block_picture(model_,
                         {"final state (displacements magnified)",
                          fields.u,
@@ -266,7 +286,8 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
                          {},
                          1000,
                          water_surface(model_, stage),
-                         present},
+                         present,
+                         bolt_use},
                         dir / "final");
     files.insert(files.end(), {"final.png", "final.svg"});
     if (result.collapse && result.collapse->direction.size() == model_.n_dofs()) {

@@ -50,7 +50,8 @@ class PlasticResultsWriter {
   ElasticSolution finish(const PlasticResult& result);
 
  private:
-  [[nodiscard]] ElasticSolution fields_of(const AnalysisState& state) const;
+  /// The fields of `state`, reached in stage `stage` (-1: the start, no bolt standing).
+  [[nodiscard]] ElasticSolution fields_of(const AnalysisState& state, int stage) const;
 
   const Model& model_;
   OutputOptions options_;
@@ -60,6 +61,7 @@ class PlasticResultsWriter {
   int carried_ = 0;  // increments carried so far
   /// The last carried state, while it has no step of its own (vtk_every > 1).
   std::optional<AnalysisState> unwritten_;
+  int unwritten_stage_ = -1;
 };
 
 }  // namespace bimrock

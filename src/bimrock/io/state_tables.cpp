@@ -60,4 +60,39 @@ void write_interfaces_csv(const Model& model, const ElasticSolution& fields,
   check_written(out, file);
 }
 
+namespace {
+
+// A CSV field holding free text: quoted, its quotes doubled (RFC 4180).
+std::string csv_text(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"')
+      out += '"';
+    out += c;
+  }
+  return out + '"';
+}
+
+}  // namespace
+
+void write_bolts_csv(const Model& model, const ElasticSolution& fields,
+                     const std::filesystem::path& file) {
+  std::ofstream out = open_for_writing(file);
+  out << "spring,bolt,name,kind,installed_stage,block_a,block_b,x_a_m,y_a_m,x_b_m,y_b_m,standing,"
+         "axial_force_N,shear_force_N,elongation_m,shear_displacement_m,plastic_elongation_m,"
+         "plastic_shear_m,axial_capacity_used,yielded\n";
+  for (std::size_t k = 0; k < model.bolt_springs.size(); ++k) {
+    const BoltSpring& s = model.bolt_springs[k];
+    const Bolt& bolt = model.bolts[static_cast<std::size_t>(s.bolt)];
+    const SpringState& r = fields.springs[k];
+    out << fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", k, s.bolt,
+                       csv_text(bolt.name),
+                       bolt.kind == BoltSpec::Kind::anchored ? "anchored" : "grouted", bolt.stage,
+                       s.block_a, s.block_b, s.a.x(), s.a.y(), s.b.x(), s.b.y(), r.standing ? 1 : 0,
+                       r.force(0), r.force(1), r.delta(0), r.delta(1), r.plastic(0), r.plastic(1),
+                       r.force(0) / bolt.capacity, r.yielded ? 1 : 0);
+  }
+  check_written(out, file);
+}
+
 }  // namespace bimrock

@@ -15,4 +15,9 @@ void write_blocks_csv(const Model& model, const ElasticSolution& fields,
 void write_interfaces_csv(const Model& model, const ElasticSolution& fields,
                           const std::filesystem::path& file);
 
+/// bolts.csv: per bolt spring its bolt, blocks and points, whether it stands, its forces (per
+/// bolt), displacement since installation, plastic part, and its use of the capacity.
+void write_bolts_csv(const Model& model, const ElasticSolution& fields,
+                     const std::filesystem::path& file);
+
 }  // namespace bimrock

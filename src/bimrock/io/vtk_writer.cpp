@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/core.h>
 
@@ -76,7 +77,11 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
                const std::filesystem::path& file, const Eigen::VectorXd* mechanism) {
   const int nb = model.n_blocks();
   const int nf = model.n_interfaces();
-  const int cells = nb + nf;
+  std::vector<int> springs;  // the standing bolt springs, one line cell each
+  for (std::size_t k = 0; k < fields.springs.size(); ++k)
+    if (fields.springs[k].standing)
+      springs.push_back(static_cast<int>(k));
+  const int cells = nb + nf + static_cast<int>(springs.size());
   // Points: the corners of every block, then the two ends of every interface.
   std::vector<Vec2> points;
   std::vector<Vec2> moves;
@@ -95,6 +100,15 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
       points.push_back(v);
       owners.push_back(f.block_i);
       moves.push_back(displacement_at(model, f.block_i, v, fields.u));
+    }
+    offsets.push_back(static_cast<std::int64_t>(points.size()));
+  }
+  for (const int k : springs) {
+    const BoltSpring& s = model.bolt_springs[static_cast<std::size_t>(k)];
+    for (const auto& [v, b] : {std::pair{s.a, s.block_a}, std::pair{s.b, s.block_b}}) {
+      points.push_back(v);
+      owners.push_back(b);
+      moves.push_back(displacement_at(model, b, v, fields.u));
     }
     offsets.push_back(static_cast<std::int64_t>(points.size()));
   }
@@ -137,16 +151,24 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
     return c < nb ? &fields.blocks[static_cast<std::size_t>(c)] : nullptr;
   };
   auto face = [&](int c) -> const InterfaceState* {
-    return c >= nb ? &fields.interfaces[static_cast<std::size_t>(c - nb)] : nullptr;
+    return c >= nb && c < nb + nf ? &fields.interfaces[static_cast<std::size_t>(c - nb)] : nullptr;
+  };
+  auto spring = [&](int c) -> const SpringState* {
+    return c >= nb + nf ? &fields.springs[static_cast<std::size_t>(springs[c - nb - nf])] : nullptr;
   };
   auto mean = [](const InterfaceState& s, auto member, int k) {
     return 0.5 * ((s[0].*member)(k) + (s[1].*member)(k));
   };
-  data_array(out, "kind", 1, cells, [&](int c, int) { return c < nb ? 0.0 : 1.0; });
-  data_array(out, "id", 1, cells, [&](int c, int) { return c < nb ? c : c - nb; });
+  data_array(out, "kind", 1, cells, [&](int c, int) { return c < nb ? 0.0 : face(c) ? 1.0 : 2.0; });
+  data_array(out, "id", 1, cells, [&](int c, int) {
+    return c < nb ? c : face(c) ? c - nb : springs[static_cast<std::size_t>(c - nb - nf)];
+  });
   data_array(out, "material", 1, cells, [&](int c, int) {
-    return c < nb ? model.blocks[static_cast<std::size_t>(c)].material
-                  : model.interfaces[static_cast<std::size_t>(c - nb)].joint_material;
+    if (c < nb)
+      return model.blocks[static_cast<std::size_t>(c)].material;
+    if (face(c))
+      return model.interfaces[static_cast<std::size_t>(c - nb)].joint_material;
+    return model.bolt_springs[static_cast<std::size_t>(springs[c - nb - nf])].bolt;
   });
   data_array(out, "stress", 3, cells,
              [&](int c, int k) { return block(c) ? block(c)->stress(k) : 0.0; });
@@ -172,7 +194,11 @@ void write_vtu(const Model& model, const ElasticSolution& fields, const PlasticP
     return face(c) ? mean(*face(c), &InterfacePointState::plastic, k) : 0.0;
   });
   data_array(out, "interface_state", 1, cells,
-             [&](int c, int) { return c >= nb ? interface_state_code(plastic, c - nb) : 0; });
+             [&](int c, int) { return face(c) ? interface_state_code(plastic, c - nb) : 0; });
+  data_array(out, "bolt_force", 2, cells,
+             [&](int c, int k) { return spring(c) ? spring(c)->force(k) : 0.0; });
+  data_array(out, "bolt_state", 1, cells,
+             [&](int c, int) { return spring(c) && spring(c)->yielded ? 1.0 : 0.0; });
   out << "      </CellData>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   check_written(out, file);
 }
