@@ -165,6 +165,78 @@ TEST(PullOutExample, CollapseLoadPlotAndMechanismAreWritten) {
   fs::remove_all(out.parent_path());
 }
 
+// The bolted tunnel (examples/tunnel_excavation/bolted.yaml): grouted bolts round the crown,
+// installed after half the heading's release, hold the wedge that falls from the unbolted crown;
+// until they are installed the two runs are the same.
+TEST(Examples, BoltsInstalledAfterHalfTheReleaseHoldTheTunnelsCrown) {
+  const fs::path out = run_example("tunnel_excavation/bolted.yaml");
+  const nlohmann::json s = testing::read_json(out / "summary.json");
+  EXPECT_TRUE(s.at("collapse").is_null());
+  EXPECT_TRUE(s.at("stopped").is_null());
+  const nlohmann::json& bolts = s.at("bolts");
+  EXPECT_EQ(bolts.at("bolts").get<int>(), 5);
+  EXPECT_EQ(bolts.at("standing_springs").get<int>(), bolts.at("springs").get<int>());
+  EXPECT_GT(bolts.at("largest_capacity_used").get<double>(), 0.0);
+  EXPECT_LT(bolts.at("largest_capacity_used").get<double>(), 1.0);
+
+  // bolts.csv: every spring installed at stage 2 ('heading relaxation'), most of them stretched.
+  std::ifstream csv(out / "bolts.csv");
+  std::string line;
+  std::getline(csv, line);
+  int rows = 0;
+  int stretched = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::size_t at = 0;
+    for (std::size_t comma; (comma = line.find(',', at)) != std::string::npos; at = comma + 1)
+      cells.push_back(line.substr(at, comma - at));
+    cells.push_back(line.substr(at));
+    ASSERT_EQ(cells.size(), 20u) << line;
+    EXPECT_EQ(cells[4], "2") << line;   // installed_stage
+    EXPECT_EQ(cells[11], "1") << line;  // standing
+    stretched += std::stod(cells[12]) > 0.0 ? 1 : 0;
+    ++rows;
+  }
+  EXPECT_EQ(rows, bolts.at("springs").get<int>());
+  EXPECT_GT(2 * stretched, rows);
+
+  // The last VTK step read back by meshio: a line cell (kind 2) per standing spring, with the
+  // forces of bolts.csv.
+  const nlohmann::json vtu = testing::read_vtu_with_meshio(out / "vtk" / "step_0013.vtu");
+  const nlohmann::json& model = s.at("model");
+  EXPECT_EQ(vtu.at("cells").at("line").get<int>(),
+            model.at("interfaces").get<int>() + model.at("support_interfaces").get<int>() + rows);
+  const auto& kind = vtu.at("cell_data").at("kind");
+  const auto& force = vtu.at("cell_data").at("bolt_force");
+  int springs = 0;
+  double largest = 0.0;
+  for (std::size_t c = 0; c < kind.size(); ++c) {
+    if (kind[c][0].get<double>() != 2.0)
+      continue;
+    ++springs;
+    largest = std::max(largest, force[c][0].get<double>());
+  }
+  EXPECT_EQ(springs, rows);
+  EXPECT_NEAR(largest / 2.45e5, bolts.at("largest_capacity_used").get<double>(), 1e-12);
+
+  // Up to the bolts' installation, the unbolted run's history.
+  const fs::path plain = run_example("tunnel_excavation/case.yaml");
+  const auto history = [](const fs::path& file) {
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    for (std::string l; std::getline(in, l);)
+      lines.push_back(l.substr(0, l.rfind(',')));  // without the time the increment took
+    return lines;
+  };
+  const std::vector<std::string> bolted = history(out / "history.csv");
+  const std::vector<std::string> unbolted = history(plain / "history.csv");
+  ASSERT_GE(bolted.size(), 6u);
+  ASSERT_GE(unbolted.size(), 6u);
+  for (std::size_t k = 0; k < 6; ++k)  // the header, in situ, the heading's 4 increments
+    EXPECT_EQ(bolted[k], unbolted[k]);
+  EXPECT_TRUE(fs::exists(out / "final.png"));
+}
+
 }  // namespace
 }  // namespace bimrock
 

@@ -31,7 +31,7 @@ constexpr double kPretension = 1e5;      // T0 [N], per bolt
 constexpr double kCapacity = 3e5;        // N_y [N], per bolt
 constexpr double kSpacing = 0.5;         // [m]: w = t / spacing = 2 bolts in the model
 constexpr double kBolts = 2.0;           // w
-constexpr double kJointCohesion = 1e4;        // [Pa]
+constexpr double kJointCohesion = 1e4;   // [Pa]
 
 // The two squares [0, 1] x [0, 1] and [0, 1] x [1, 2] on a fixed base, the joint between them
 // with a tension cut-off at 0 and cohesion (friction 0: a Tresca joint, associated); stages
@@ -47,14 +47,16 @@ Model stacked(const std::vector<StageSpec>& stages, double tensile = 0.0) {
   joint.strength = s;
   c.joint_materials = {joint};
   c.default_joint = "joint";
-  c.blocks = testing::blocks_of({Polygon{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
-                                 Polygon{{{0, 1}, {1, 1}, {1, 2}, {0, 2}}}});
+  c.blocks = testing::blocks_of(
+      {Polygon{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, Polygon{{{0, 1}, {1, 1}, {1, 2}, {0, 2}}}});
   c.supports = {testing::fixed({0, 0}, {1, 0})};
   c.stages = stages;
   return build_model(c);
 }
 
-int upper_block(const Model& m) { return m.blocks[0].centroid.y() > 1.0 ? 0 : 1; }
+int upper_block(const Model& m) {
+  return m.blocks[0].centroid.y() > 1.0 ? 0 : 1;
+}
 
 // An anchored bolt from the top of the upper block to the lower block's centre, installed at
 // stage 0.

@@ -36,7 +36,7 @@ json timings_json(const Timings& t) {
   return j;
 }
 
-json mechanism_json(const std::vector<YieldPoint>& points, const Collapse& c,
+json mechanism_json(const Model& model, const std::vector<YieldPoint>& points, const Collapse& c,
                     const std::vector<MechanismJoint>& joints) {
   static constexpr const char* kJointModes[] = {"slip+", "slip-", "opening"};
   std::map<int, JointMotion> net;
@@ -54,6 +54,11 @@ json mechanism_json(const std::vector<YieldPoint>& points, const Collapse& c,
       const auto it = net.find(e.point);
       if (it != net.end())
         item["net_mode"] = joint_motion_name(it->second);
+    } else if (p.is_bolt()) {
+      static constexpr const char* kBoltModes[] = {"tension", "shear+", "shear-"};
+      item["bolt_spring"] = p.owner;
+      item["bolt"] = bolt_of(model, p).name;
+      item["mode"] = e.mode >= 0 && e.mode < 3 ? kBoltModes[e.mode] : "?";
     } else {
       item["block"] = p.owner;
       item["mode"] = "plane " + std::to_string(e.mode);
@@ -117,7 +122,7 @@ json factor_of_safety_json(const Model& model, const std::vector<YieldPoint>& po
     const MechanismBlocks blocks = mechanism_blocks(model, f.collapse->direction);
     const std::vector<MechanismJoint> joints =
         mechanism_joints(model, points, *f.collapse, blocks.scale);
-    out["mechanism"] = mechanism_json(points, *f.collapse, joints);
+    out["mechanism"] = mechanism_json(model, points, *f.collapse, joints);
     out["mechanism_joints"] = mechanism_joints_json(points, joints);
     if (f.collapse->direction.size() == model.n_dofs())
       out["mechanism_blocks"] = mechanism_blocks_json(blocks);
@@ -190,7 +195,7 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                        {"carried_point_load_N", c.carried * load},
                        {"failed_point_load_N", c.failed * load},
                        {"unstable_at_first_load", c.unstable_at_first_load},
-                       {"mechanism", mechanism_json(plastic->points, c, joints)},
+                       {"mechanism", mechanism_json(model, plastic->points, c, joints)},
                        {"mechanism_joints", mechanism_joints_json(plastic->points, joints)}};
       if (c.direction.size() == model.n_dofs())
         j["collapse"]["mechanism_blocks"] = mechanism_blocks_json(blocks);
@@ -203,6 +208,26 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
     j["factorizations"] = {{"stiffness", plastic->stiffness_factorizations +
                                              plastic->condensations + plastic->regions},
                            {"tangents", plastic->tangent_factorizations}};
+    if (!model.bolts.empty()) {
+      int standing = 0;
+      int yielded = 0;
+      double most_used = 0.0;
+      for (std::size_t k = 0; k < fields.springs.size(); ++k) {
+        const SpringState& r = fields.springs[k];
+        standing += r.standing ? 1 : 0;
+        yielded += r.yielded ? 1 : 0;
+        if (r.standing)
+          most_used = std::max(
+              most_used,
+              r.force(0) /
+                  model.bolts[static_cast<std::size_t>(model.bolt_springs[k].bolt)].capacity);
+      }
+      j["bolts"] = {{"bolts", model.bolts.size()},
+                    {"springs", model.bolt_springs.size()},
+                    {"standing_springs", standing},
+                    {"yielded_springs", yielded},
+                    {"largest_capacity_used", most_used}};
+    }
     if (plastic->initial_stress)
       j["initial_stress"] = {{"residual_N", plastic->initial_stress->residual},
                              {"relative_residual", plastic->initial_stress->relative_residual},
