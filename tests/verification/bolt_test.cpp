@@ -9,7 +9,8 @@
 //   closed, so the joint's compression falls as w T0 - P k_j / (k_j + w k_b) and the joint opens at
 //   P = w T0 (1 + w k_b / k_j), the separation load of a preloaded bolted joint; opened, the
 //   bolts carry P alone and yield at P = w N_y, where the block lifts off (a collapse).
-// - A grouted bolt across a joint that slides (Tresca, c): the block slides at H = c L t + w V_y.
+// - A grouted bolt across a joint that slides (Tresca, c): the block slides at H = c L t + w V_y,
+//   and the factor of safety divides c only.
 // Units: SI.
 #include <cmath>
 
@@ -160,12 +161,8 @@ TEST(Bolt, ThePulledBlockLiftsOffWhenTheBoltsYield) {
   EXPECT_LT(r.collapse->failed - r.collapse->carried, 2e-4 * lift_off);
 }
 
-TEST(Bolt, AGroutedBoltAddsItsShearCapacityToTheJoints) {
-  const double shear_capacity = 5e3;
-  const double sliding = kJointCohesion * 1.0 * 1.0 + kBolts * shear_capacity;  // H = c L t + w V_y
-  const double push = 2.0 * sliding;
-  // No tension cut-off in the way: the push's moment must not open the joint.
-  Model m = stacked({stage("push", 10, Vec2(push, 0.0))}, 1e9);
+// The dowel: a grouted bolt through the joint, with a shear capacity.
+void dowel_through(Model& m, double shear_capacity) {
   Bolt b;
   b.name = "dowel";
   b.kind = BoltSpec::Kind::grouted;
@@ -179,12 +176,39 @@ TEST(Bolt, AGroutedBoltAddsItsShearCapacityToTheJoints) {
   m.bolts = {b};
   const int up = upper_block(m);
   m.bolt_springs = {BoltSpring{0, up, 1 - up, Vec2(0.5, 1.0), Vec2(0.5, 1.0), Vec2(0.0, -1.0)}};
+}
+
+constexpr double kDowelShearCapacity = 5e3;  // V_y [N], per bolt
+
+TEST(Bolt, AGroutedBoltAddsItsShearCapacityToTheJoints) {
+  const double sliding = kJointCohesion * 1.0 * 1.0 + kBolts * kDowelShearCapacity;
+  const double push = 2.0 * sliding;
+  // No tension cut-off in the way: the push's moment must not open the joint.
+  Model m = stacked({stage("push", 10, Vec2(push, 0.0))}, 1e9);
+  dowel_through(m, kDowelShearCapacity);
   const PlasticResult r = run_plastic_analysis(m, {});
   ASSERT_TRUE(r.collapse);
   const double at = sliding / push;
   EXPECT_LE(r.collapse->carried, at * (1.0 + 1e-9));
   EXPECT_GE(r.collapse->failed, at * (1.0 - 1e-9));
   EXPECT_LT(r.collapse->failed - r.collapse->carried, 2e-4 * at);
+}
+
+// Strength reduction divides the joint's cohesion, not the bolts' capacity: under a push H the
+// block slides when c L t / F + w V_y = H, F = c L t / (H - w V_y).
+TEST(Bolt, TheFactorOfSafetyKeepsTheBoltsCapacity) {
+  const double push = 1.2e4;
+  Model m = stacked({stage("push", 1, Vec2(push, 0.0))}, 1e9);
+  dowel_through(m, kDowelShearCapacity);
+  PlasticOptions options;
+  options.factor_of_safety = FactorOfSafetyOptions{};
+  const PlasticResult r = run_plastic_analysis(m, options);
+  ASSERT_FALSE(r.collapse);
+  ASSERT_TRUE(r.factor_of_safety && r.factor_of_safety->collapse);
+  const double f = kJointCohesion * 1.0 * 1.0 / (push - kBolts * kDowelShearCapacity);  // 5
+  EXPECT_LE(r.factor_of_safety->lower, f * (1.0 + 1e-6));
+  EXPECT_GE(r.factor_of_safety->collapse->failed, f * (1.0 - 1e-6));
+  EXPECT_LT(r.factor_of_safety->collapse->failed - r.factor_of_safety->lower, 1.1e-3 * f);
 }
 
 }  // namespace

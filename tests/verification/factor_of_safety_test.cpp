@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/model/model.hpp>
 
 #include "support/incline_case.hpp"
 
@@ -144,6 +145,59 @@ TEST(FactorOfSafety, ABlockThatSlidesUnderItsStagesHasAFactorBelowOne) {
   ASSERT_TRUE(rc.factor_of_safety && rc.factor_of_safety->collapse);
   EXPECT_LE(rc.factor_of_safety->lower, with_cohesion * (1.0 + 1e-6));
   EXPECT_GE(rc.factor_of_safety->collapse->failed, with_cohesion * (1.0 - 1e-6));
+}
+
+// The cohesive block of the test above, (a) from an initial stress (uniform, within the joint's
+// strength, not traction-free on the block's faces: the first stage applies the difference), and
+// (b) propped downslope by a second block that a later stage excavates. Limit equilibrium does
+// not depend on the stress the rock started from (the first stage ends in equilibrium with the
+// same loads), nor on a prop that is gone: F after the last stage is the lone block's.
+double cohesive_incline_factor(const Incline& in, double cohesion) {
+  const double w = in.weight();
+  const double a = in.slope_deg * kDeg;
+  return (cohesion * in.width + w * std::cos(a) * std::tan(in.friction_deg * kDeg)) /
+         (w * std::sin(a));
+}
+
+TEST(FactorOfSafety, FromAnInitialStressTheBlockFollowsLimitEquilibrium) {
+  Incline in;
+  in.slope_deg = 30.0;
+  in.friction_deg = 20.0;
+  CaseSpec c = testing::incline_case(in);
+  const double cohesion = 5e3;  // [Pa]
+  c.joint_materials[0].strength->cohesion = Softening::constant(cohesion);
+  InitialStressSpec field;
+  field.uniform = Eigen::Vector3d(-1e4, -2e4, 3e3);  // [Pa]: |tau| < c + 2e4 tan(20 deg)
+  c.initial_stress = field;
+  const PlasticResult r = with_factor_of_safety(c);
+  ASSERT_TRUE(r.initial_stress.has_value());
+  EXPECT_GT(r.initial_stress->residual, 0.0);  // the field is not the block's equilibrium
+  expect_bracket(r, cohesive_incline_factor(in, cohesion));
+}
+
+TEST(FactorOfSafety, AfterAnExcavationTheBlockLeftFollowsLimitEquilibrium) {
+  Incline in;
+  in.slope_deg = 30.0;
+  in.friction_deg = 20.0;
+  CaseSpec c = testing::incline_case(in);
+  const double cohesion = 5e3;  // [Pa]
+  c.joint_materials[0].strength->cohesion = Softening::constant(cohesion);
+  // The prop [w, w + 0.5] x [0, h], downslope, on the same base.
+  c.blocks.push_back(testing::blocks_of({Polygon{{{in.width, 0},
+                                                  {in.width + 0.5, 0},
+                                                  {in.width + 0.5, in.height},
+                                                  {in.width, in.height}}}})
+                         .front());
+  StageSpec excavation{"remove the prop", {}, 2, std::nullopt, {0, "stages[1]"}};
+  BlockSelector prop;
+  prop.kind = BlockSelector::Kind::box;
+  prop.box = BBox{Vec2(in.width + 0.1, 0.1), Vec2(in.width + 0.4, in.height - 0.1)};
+  prop.source = {0, "stages[1].excavate"};
+  excavation.excavate = prop;
+  c.stages.push_back(excavation);
+  const PlasticResult r = with_factor_of_safety(c);
+  EXPECT_EQ(r.factor_of_safety->stage, 1);
+  expect_bracket(r, cohesive_incline_factor(in, cohesion));
 }
 
 }  // namespace
