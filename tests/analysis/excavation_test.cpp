@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/plastic_analysis.hpp>
 #include <bimrock/model/errors.hpp>
 #include <bimrock/model/model.hpp>
@@ -185,19 +186,80 @@ TEST(Excavation, WithYieldingJointsThePathMatters) {
   EXPECT_GT(relative_difference(r2.state.u, r1.state.u), 1e-3);
 }
 
-TEST(Excavation, InstallingBlocksIsRefusedByTheAnalysisNamingThem) {
-  CaseSpec c = wall(false);
-  StageSpec lining{"lining", {}, 1, std::nullopt, {0, "stages[1]"}};
-  lining.install = box({-0.1, 3.1}, {1.1, 4.1});  // the top-left square, absent until then
-  c.stages.push_back(lining);
-  const Model model = build_model(c);
-  try {
-    run_plastic_analysis(model);
-    FAIL() << "installing was not refused";
-  } catch (const ModelError& e) {
-    EXPECT_NE(std::string(e.what()).find("'lining' installs blocks"), std::string::npos);
-    EXPECT_EQ(e.blocks(), std::vector<int>{18});
+// The force the interfaces of `block` exert on it at the end of `r` (t = 1): the traction R
+// along n and s on block i, its opposite on block j.
+Vec2 interface_forces_on(const Model& model, const PlasticResult& r, int block) {
+  YieldPointIndex index;
+  static_cast<void>(make_yield_points(model, &index));
+  Vec2 sum = Vec2::Zero();
+  for (int k = 0; k < model.n_interfaces(); ++k) {
+    const Interface& f = model.interfaces[k];
+    if (f.block_i != block && f.block_j != block)
+      continue;
+    const InterfaceState st =
+        interface_state(model, k, r.state.u, {&index, &r.state.points, &r.state.installed});
+    Vec2 on_i = Vec2::Zero();
+    for (const InterfacePointState& p : st)
+      on_i += 0.5 * f.segment.length() * (p.stress(0) * f.normal + p.stress(1) * perp(f.normal));
+    sum += f.block_i == block ? on_i : Vec2(-on_i);
   }
+  return sum;
+}
+
+// Installing the top-left square after the wall has settled under its weight. Elastic, so
+// superposition holds: the wall without the square under gravity, plus the whole wall under the
+// square's weight alone (a point load at its centroid: gravity has no first moment there), the
+// square itself moving from its installation. And the square's interfaces start unstressed: what
+// they carry at the end is its weight.
+TEST(Excavation, AnInstalledBlockIsPlacedUnstressedAndAddsItsWeight) {
+  const Vec2 square(0.5, 3.5);
+  const auto is_square = [&](Vec2 centre) { return (centre - square).norm() < 1e-9; };
+  CaseSpec c = wall(false);
+  StageSpec backfill{"backfill", {}, 3, std::nullopt, {0, "stages[1]"}};
+  backfill.install = box({0.1, 3.1}, {0.9, 3.9});
+  c.stages.push_back(backfill);
+  const Model model = build_model(c);
+  ASSERT_EQ(model.stages[1].installed.size(), 1u);
+  const int installed = model.stages[1].installed.front();
+  const PlasticResult r = run_plastic_analysis(model);
+  ASSERT_FALSE(r.collapse || r.stopped);
+
+  const Model without = build_model(wall(false, is_square));
+  const Eigen::VectorXd settled = run_plastic_analysis(without).state.u;
+  CaseSpec weight = wall(false);
+  const double w = 25e3 * 1.0 * 1.0;  // unit weight x area x thickness [N]
+  weight.stages.front().loads.gravity = Vec2::Zero();
+  weight.stages.front().loads.points = {PointLoadSpec{square, Vec2(0.0, -w), {0, "load"}}};
+  const Model whole = build_model(weight);
+  const Eigen::VectorXd added = run_plastic_analysis(whole).state.u;
+
+  Eigen::VectorXd expected = added;  // whole's blocks are model's, in the same order
+  for (int b = 0; b < without.n_blocks(); ++b)
+    for (int k = 0; k < model.n_blocks(); ++k)
+      if ((model.blocks[k].centroid - without.blocks[b].centroid).norm() < 1e-9)
+        expected.segment<6>(6 * k) += settled.segment<6>(6 * b);
+  EXPECT_LT((r.state.u - expected).cwiseAbs().maxCoeff(), 1e-9 * expected.cwiseAbs().maxCoeff());
+
+  // The square's equilibrium: its interfaces push it up by its weight, no more.
+  const Vec2 carried = interface_forces_on(model, r, installed);
+  EXPECT_NEAR(carried.x(), 0.0, 1e-9 * w);
+  EXPECT_NEAR(carried.y(), w, 1e-9 * w);
+}
+
+// The same with frictional joints, whose yield points must start unstressed too (else they
+// would yield under what the wall's settlement did before the square was there).
+TEST(Excavation, AnInstalledBlocksYieldPointsStartUnstressed) {
+  CaseSpec c = wall(true);
+  StageSpec backfill{"backfill", {}, 3, std::nullopt, {0, "stages[1]"}};
+  backfill.install = box({0.1, 3.1}, {0.9, 3.9});
+  c.stages.push_back(backfill);
+  const Model model = build_model(c);
+  const PlasticResult r = run_plastic_analysis(model);
+  ASSERT_FALSE(r.collapse || r.stopped);
+  const Vec2 carried = interface_forces_on(model, r, model.stages[1].installed.front());
+  const double w = 25e3;
+  EXPECT_NEAR(carried.x(), 0.0, 1e-9 * w);
+  EXPECT_NEAR(carried.y(), w, 1e-9 * w);
 }
 
 }  // namespace

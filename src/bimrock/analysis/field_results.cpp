@@ -36,6 +36,11 @@ InterfaceState interface_state(const Model& model, int interface, const Eigen::V
       jump += displacement_at(model, f.block_j, p, u);
     state[k].point = p;
     state[k].delta = t * jump;
+    if (plastic.installed) {
+      const auto it = plastic.installed->find(interface);
+      if (it != plastic.installed->end())
+        state[k].delta -= it->second[k];
+    }
     if (plastic.index && plastic.index->interface_points[interface][k] >= 0)
       state[k].plastic =
           (*plastic.states)[plastic.index->interface_points[interface][k]].plastic.head<2>();

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <bimrock/analysis/analysis_state.hpp>
 #include <bimrock/assembly/kinematics.hpp>
 #include <bimrock/assembly/plastic_state.hpp>
 #include <bimrock/assembly/yield_points.hpp>
@@ -22,7 +23,9 @@ struct BlockState {
 
 struct InterfacePointState {
   Vec2 point;
-  Eigen::Vector2d delta;  ///< [delta_n, delta_s] [m]; delta_n > 0 opens
+  /// [delta_n, delta_s] [m], since its installation for an installed block's interface;
+  /// delta_n > 0 opens
+  Eigen::Vector2d delta;
   /// [sigma_n, tau] = initial + D_s (delta - plastic) [Pa]; sigma_n > 0 is tension
   Eigen::Vector2d stress;
   Eigen::Vector2d plastic = Eigen::Vector2d::Zero();  ///< plastic relative displacement [m]
@@ -42,10 +45,12 @@ struct SpringState {
 
 /// Plastic parts to subtract from the elastic strains, where a nonlinear analysis has them:
 /// `plastic` of the yield point at each block / interface integration point (see
-/// YieldPointIndex), or none.
+/// YieldPointIndex), or none; and the displacements at installation of the interfaces of
+/// installed blocks, or none.
 struct PlasticParts {
   const YieldPointIndex* index = nullptr;
   const std::vector<PlasticState>* states = nullptr;
+  const InstalledInterfaces* installed = nullptr;
 };
 
 BlockState block_state(const Model& model, int block, const Eigen::VectorXd& u,

@@ -122,8 +122,8 @@ PlasticResult with_statistics(PlasticResult result, const StageStructure& struct
   return result;
 }
 
-// What stands after stage `st`'s excavation, before its bolts: the blocks of the stage, the
-// springs of `before` whose blocks both remain.
+// What stands after stage `st`'s excavation and installation of blocks, before its bolts: the
+// blocks of the stage, the springs of `before` whose blocks both remain.
 Presence excavated(const Model& model, const Presence& before, int st) {
   Presence dug{blocks_present(model, st), before.springs};
   for (std::size_t k = 0; k < dug.springs.size(); ++k) {
@@ -166,6 +166,46 @@ void lock_off(const Model& model, const std::vector<YieldPoint>& points,
     state.points[at] = PlasticState{};
     state.points[at].installed_at = local_strain(model, points[at], state.u);
   }
+}
+
+// Installs the blocks stage `st` adds (present in `now`): each interface they share with what
+// stands counts its relative displacement from here (state.installed, and its yield points'
+// installed_at), their yield points start afresh, and the loads of the earlier stages on them
+// (their weight) are returned, to be applied over the stage.
+Eigen::VectorXd install_blocks(const Model& model, const YieldPointIndex& index, int st,
+                               const Presence& now, AnalysisState& state) {
+  const Stage& stage = model.stages[static_cast<std::size_t>(st)];
+  Eigen::VectorXd placed = Eigen::VectorXd::Zero(model.n_dofs());
+  if (stage.installed.empty())
+    return placed;
+  std::vector<char> added(model.blocks.size(), 0);
+  for (const int b : stage.installed) {
+    added[static_cast<std::size_t>(b)] = 1;
+    if (const int p = index.block_points[static_cast<std::size_t>(b)]; p >= 0)
+      state.points[static_cast<std::size_t>(p)] = PlasticState{};
+  }
+  for (int k = 0; k < model.n_interfaces(); ++k) {
+    const Interface& f = model.interfaces[static_cast<std::size_t>(k)];
+    const bool touches = added[static_cast<std::size_t>(f.block_i)] ||
+                         (!f.is_support() && added[static_cast<std::size_t>(f.block_j)]);
+    if (!touches || !now.block(f.block_i) || (!f.is_support() && !now.block(f.block_j)))
+      continue;
+    const InterfaceState at = interface_state(model, k, state.u);
+    state.installed[k] = {at[0].delta, at[1].delta};
+    for (std::size_t end = 0; end < 2; ++end) {
+      if (const int p = index.interface_points[static_cast<std::size_t>(k)][end]; p >= 0) {
+        state.points[static_cast<std::size_t>(p)] = PlasticState{};
+        state.points[static_cast<std::size_t>(p)].installed_at = at[end].delta;
+      }
+    }
+  }
+  for (int k = 0; k < st; ++k) {
+    const Eigen::VectorXd earlier =
+        assemble_loads(model, model.stages[static_cast<std::size_t>(k)].loads);
+    for (const int b : stage.installed)
+      placed.segment<6>(6 * b) += earlier.segment<6>(6 * b);
+  }
+  return placed;
 }
 
 // Jacks the pretension `jack` of the bolts installed at stage `st`'s start against what stands
@@ -221,8 +261,9 @@ bool carry_pretension(const Model& model, int st, StageStructure& structure,
 // increment carried is recorded; the first collapse or undecided step ends them. `at_stage_end`
 // (if any) is called with each stage carried. A stage that excavates stands on K of the blocks
 // left and releases the forces of the blocks removed (analysis/excavation.hpp); a stage that
-// installs bolts first jacks their pretension against the structure without them, then locks
-// them off and stands on K with them.
+// installs blocks places them unstressed in the displaced structure and applies their weight over
+// its increments; a stage that installs bolts first jacks their pretension against the structure
+// without them, then locks them off and stands on K with them.
 void run_stages(const Model& model, StageStructure& structure, const YieldPointIndex& index,
                 const PlasticOptions& options, const CandidateTuning& tuning,
                 IncrementMemory& memory, const IncrementCallback& on_increment,
@@ -236,8 +277,9 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
     const Presence before = structure.present();
     const Presence dug = excavated(model, before, st);
     if (dug != before) {
-      unreleased += excavation_forces(model, before, dug, result.state.u,
-                                      {&index, &result.state.points}, result.points);
+      unreleased +=
+          excavation_forces(model, before, dug, result.state.u,
+                            {&index, &result.state.points, &result.state.installed}, result.points);
       for (std::size_t p = 0; p < result.points.size(); ++p)
         if (!point_present(result.points[p], dug))
           result.state.points[p] = PlasticState{};  // gone with its blocks
@@ -245,6 +287,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
     }
     int increment = 0;
     const Presence now = presence_at(model, st);
+    const Eigen::VectorXd placed = install_blocks(model, index, st, now, result.state);
     if (now != dug) {
       const Eigen::VectorXd jack = jack_loads(model, result.points, index, dug, now);
       if (!jack.isZero(0.0) && !carry_pretension(model, st, structure, jack, options, tuning,
@@ -256,7 +299,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
     Eigen::VectorXd load = stage_loads(model, st, structure.present().blocks);
     if (st == 0)
       load += unbalanced;
-    load += stage.release * unreleased;
+    load += stage.release * unreleased + placed;
     unreleased *= 1.0 - stage.release;
     const YieldEvaluator yield(model, result.points, &structure.present());
     const StageContext ctx =
@@ -344,14 +387,6 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
     ScopedTimer t(result.timings, "check supports");
     check_supports(model);
   }
-  for (const Stage& stage : model.stages)
-    if (!stage.installed.empty())
-      throw ModelError("stage '" + stage.name +
-                           "' installs blocks, which the analysis does not do yet: an installed "
-                           "block's interfaces must start from its neighbours' displacement at "
-                           "its installation; model the blocks as present from the start, or "
-                           "excavate only",
-                       stage.installed);
   YieldPointIndex index;
   result.points = make_yield_points(model, &index);
   if (model.initial_stress && !model.stages.empty())

@@ -11,8 +11,9 @@ struct PlasticState {
   double slip = 0.0;     ///< accumulated plastic slip (or plastic multiplier of a block) kappa
   double gap = 0.0;      ///< interfaces: current reversible opening (>= 0) [m]
   double max_gap = 0.0;  ///< interfaces: the largest opening so far, softens sigma_t [m]
-  /// Bolt springs: the relative displacement [elongation, shear] at installation [m], from which
-  /// the spring's own displacement counts.
+  /// Bolt springs and the interface points of installed blocks: the relative displacement at
+  /// installation [m] ([elongation, shear], [delta_n, delta_s]), from which the point's own
+  /// displacement counts.
   Eigen::Vector2d installed_at = Eigen::Vector2d::Zero();
 };
 

@@ -46,7 +46,7 @@ Eigen::VectorXd local_strain(const Model& model, const YieldPoint& p, const Eige
 Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const PlasticState& s,
                              const Eigen::VectorXd& u) {
   Eigen::VectorXd strain = local_strain(model, p, u);
-  if (p.is_bolt())
+  if (!p.is_block())
     strain -= s.installed_at;
   return p.initial.head(strain.size()) +
          local_stiffness(model, p) * (strain - s.plastic.head(strain.size()));

@@ -30,7 +30,7 @@ Eigen::VectorXd local_strain(const Model& model, const YieldPoint& p, const Eige
 
 /// The stress (R = [sigma_n, tau] or [sigma_x, sigma_y, tau_xy]; a bolt spring's [axial,
 /// shear] force) for the unknowns u: the initial stress plus the elastic part's (a bolt spring's
-/// displacement counted from its installation).
+/// or an installed interface's displacement counted from its installation).
 Eigen::VectorXd local_stress(const Model& model, const YieldPoint& p, const PlasticState& s,
                              const Eigen::VectorXd& u);
 

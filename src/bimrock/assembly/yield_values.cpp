@@ -62,6 +62,7 @@ void YieldEvaluator::evaluate(const std::vector<PlasticState>& states, const Eig
             interface_B(point.normal, ci, model_.blocks[point.block_j].centroid, point.position) *
             d;
       }
+      delta -= s.installed_at;
       const Interface& f = model_.interfaces[point.owner];
       const double sigma_n = point.initial(0) + f.normal_stiffness * (delta(0) - s.plastic(0));
       const double tau = point.initial(1) + f.shear_stiffness * (delta(1) - s.plastic(1));

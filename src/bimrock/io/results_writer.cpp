@@ -209,7 +209,7 @@ PlasticResultsWriter::PlasticResultsWriter(const Model& model, OutputOptions opt
 ElasticSolution PlasticResultsWriter::fields_of(const AnalysisState& state, int stage) const {
   ElasticSolution fields;
   fields.u = state.u;
-  evaluate_fields(model_, fields, {&index_, &state.points});
+  evaluate_fields(model_, fields, {&index_, &state.points, &state.installed});
   fields.springs =
       spring_states(model_, springs_present(model_, stage), state.u, {&index_, &state.points});
   return fields;
