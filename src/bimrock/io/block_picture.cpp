@@ -196,7 +196,7 @@ void draw(cairo_t* cr, const Model& m, const BlockPicture& pic, const Frame& f, 
   cairo_show_text(cr, pic.title.c_str());
   if (!pic.marks.empty()) {
     cairo_set_font_size(cr, 12);
-    const char* legend = "red: slipping joint   blue: opening joint   black: support";
+    const char* legend = "red: joint slipping   blue: joint opening   black: support";
     cairo_text_extents_t e;
     cairo_text_extents(cr, legend, &e);
     cairo_move_to(cr, width - kMargin - e.width, kTitle - 8);

@@ -65,6 +65,32 @@ std::vector<InterfaceMark> mechanism_marks(const Model& model,
   return marks;
 }
 
+// The interface marks of a state: the joints that have slipped and those open (continuum
+// interfaces only where they have).
+std::vector<InterfaceMark> state_marks(const Model& model, const YieldPointIndex& index,
+                                       const std::vector<PlasticState>& states) {
+  std::vector<InterfaceMark> marks(static_cast<std::size_t>(model.n_interfaces()),
+                                   InterfaceMark::none);
+  for (std::size_t f = 0; f < marks.size(); ++f) {
+    if (model.interfaces[f].joint_material < 0 || model.interfaces[f].is_support())
+      continue;
+    const bool continuum =
+        model.joint_materials[static_cast<std::size_t>(model.interfaces[f].joint_material)].kind ==
+        JointMaterial::Kind::continuum;
+    marks[f] = continuum ? InterfaceMark::none : InterfaceMark::joint;
+    for (const int p : index.interface_points[f]) {
+      if (p < 0)
+        continue;
+      const PlasticState& s = states[static_cast<std::size_t>(p)];
+      if (s.gap > 0.0)
+        marks[f] = InterfaceMark::opening;
+      else if (s.slip > 0.0 && marks[f] != InterfaceMark::opening)
+        marks[f] = InterfaceMark::slipping;
+    }
+  }
+  return marks;
+}
+
 // The factor of safety's pictures: F against the largest plastic multiplier of its step, and the
 // mechanism at the smallest F that fails.
 void write_factor_of_safety(const Model& model, const PlasticResult& result, const fs::path& dir,
@@ -280,14 +306,9 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
         bolt_use[k] = fields.springs[k].force(0) /
                       model_.bolts[static_cast<std::size_t>(model_.bolt_springs[k].bolt)].capacity;
     write_block_picture(model_,
-                        {"final state (displacements magnified)",
-                         fields.u,
-                         0.05,
-                         {},
-                         1000,
-                         water_surface(model_, stage),
-                         present,
-                         bolt_use},
+                        {"final state (displacements magnified)", fields.u, 0.05,
+                         state_marks(model_, index_, result.state.points), 1000,
+                         water_surface(model_, stage), present, bolt_use},
                         dir / "final");
     files.insert(files.end(), {"final.png", "final.svg"});
     if (result.collapse && result.collapse->direction.size() == model_.n_dofs()) {
