@@ -23,7 +23,8 @@ __all__ = ["Case", "Result", "InputError", "ModelError", "install_factor_memory"
 # The sections of a case that leave its blocks and interfaces as they are: update() may replace
 # them and the geometry is kept. Blocks, domain, mesh, joints and supports make the geometry.
 UPDATABLE_SECTIONS = frozenset({"title", "analysis", "materials", "joint_materials", "loads",
-                                "stages", "monitors", "factor_of_safety", "output", "limits"})
+                                "stages", "initial_stress", "bolts", "monitors",
+                                "factor_of_safety", "output", "limits"})
 
 
 def _plain(value):

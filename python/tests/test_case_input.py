@@ -136,3 +136,17 @@ def test_update_equals_a_case_built_anew_and_refuses_the_geometry():
     renamed["granite"] = renamed.pop("rock")
     with pytest.raises(bimrock.InputError, match="build a new model"):
         case.update(materials=renamed)
+
+
+def test_update_bolts_holds_or_frees_the_tunnel_crown():
+    # examples/tunnel_excavation: its crown wedge falls in the bench's stage without bolts, and
+    # stands with them (bolted.yaml is case.yaml plus the bolts).
+    case = bimrock.Case.from_file(str(example("tunnel_excavation", "bolted.yaml")))
+    bolts = case.document["bolts"]
+    assert case.run().collapse is None
+    case.update(bolts=None)
+    assert "bolts" not in case.document
+    unbolted = case.run()
+    assert unbolted.collapse["stage"] == 3  # bench
+    case.update(bolts=bolts)
+    assert case.run().collapse is None
