@@ -50,19 +50,33 @@ TEST(FactorOfSafety, CohesionlessBlockOnAnInclineIsTanPhiOverTanAlpha) {
                  std::tan(35.0 * kDeg) / std::tan(20.0 * kDeg));
 }
 
-TEST(FactorOfSafety, CohesiveBlockOnAnInclineFollowsLimitEquilibrium) {
+// A block on a 30 degree incline, its joint of 20 degrees friction and 5 kPa cohesion, and its F
+// by limit equilibrium.
+constexpr double kInclineCohesion = 5e3;  // [Pa]
+
+Incline cohesive_incline() {
   Incline in;
   in.slope_deg = 30.0;
   in.friction_deg = 20.0;
+  return in;
+}
+
+CaseSpec cohesive_incline_case(const Incline& in) {
   CaseSpec c = testing::incline_case(in);
-  const double cohesion = 5e3;  // [Pa]
-  c.joint_materials[0].strength->cohesion = Softening::constant(cohesion);
+  c.joint_materials[0].strength->cohesion = Softening::constant(kInclineCohesion);
+  return c;
+}
+
+double cohesive_incline_factor(const Incline& in) {
   const double w = in.weight();
   const double a = in.slope_deg * kDeg;
-  const double expected =
-      (cohesion * in.width + w * std::cos(a) * std::tan(in.friction_deg * kDeg)) /
-      (w * std::sin(a));
-  expect_bracket(with_factor_of_safety(c), expected);
+  return (kInclineCohesion * in.width + w * std::cos(a) * std::tan(in.friction_deg * kDeg)) /
+         (w * std::sin(a));
+}
+
+TEST(FactorOfSafety, CohesiveBlockOnAnInclineFollowsLimitEquilibrium) {
+  const Incline in = cohesive_incline();
+  expect_bracket(with_factor_of_safety(cohesive_incline_case(in)), cohesive_incline_factor(in));
 }
 
 TEST(FactorOfSafety, ABlockOnALevelPlaneIsStableForEveryFactor) {
@@ -147,41 +161,26 @@ TEST(FactorOfSafety, ABlockThatSlidesUnderItsStagesHasAFactorBelowOne) {
   EXPECT_GE(rc.factor_of_safety->collapse->failed, with_cohesion * (1.0 - 1e-6));
 }
 
-// The cohesive block of the test above, (a) from an initial stress (uniform, within the joint's
-// strength, not traction-free on the block's faces: the first stage applies the difference), and
-// (b) propped downslope by a second block that a later stage excavates. Limit equilibrium does
-// not depend on the stress the rock started from (the first stage ends in equilibrium with the
-// same loads), nor on a prop that is gone: F after the last stage is the lone block's.
-double cohesive_incline_factor(const Incline& in, double cohesion) {
-  const double w = in.weight();
-  const double a = in.slope_deg * kDeg;
-  return (cohesion * in.width + w * std::cos(a) * std::tan(in.friction_deg * kDeg)) /
-         (w * std::sin(a));
-}
-
+// The cohesive block, (a) from an initial stress (uniform, within the joint's strength, not
+// traction-free on the block's faces: the first stage applies the difference), and (b) propped
+// downslope by a second block that a later stage excavates. Limit equilibrium does not depend on
+// the stress the rock started from (the first stage ends in equilibrium with the same loads),
+// nor on a prop that is gone: F after the last stage is the lone block's.
 TEST(FactorOfSafety, FromAnInitialStressTheBlockFollowsLimitEquilibrium) {
-  Incline in;
-  in.slope_deg = 30.0;
-  in.friction_deg = 20.0;
-  CaseSpec c = testing::incline_case(in);
-  const double cohesion = 5e3;  // [Pa]
-  c.joint_materials[0].strength->cohesion = Softening::constant(cohesion);
+  const Incline in = cohesive_incline();
+  CaseSpec c = cohesive_incline_case(in);
   InitialStressSpec field;
   field.uniform = Eigen::Vector3d(-1e4, -2e4, 3e3);  // [Pa]: |tau| < c + 2e4 tan(20 deg)
   c.initial_stress = field;
   const PlasticResult r = with_factor_of_safety(c);
   ASSERT_TRUE(r.initial_stress.has_value());
   EXPECT_GT(r.initial_stress->residual, 0.0);  // the field is not the block's equilibrium
-  expect_bracket(r, cohesive_incline_factor(in, cohesion));
+  expect_bracket(r, cohesive_incline_factor(in));
 }
 
 TEST(FactorOfSafety, AfterAnExcavationTheBlockLeftFollowsLimitEquilibrium) {
-  Incline in;
-  in.slope_deg = 30.0;
-  in.friction_deg = 20.0;
-  CaseSpec c = testing::incline_case(in);
-  const double cohesion = 5e3;  // [Pa]
-  c.joint_materials[0].strength->cohesion = Softening::constant(cohesion);
+  const Incline in = cohesive_incline();
+  CaseSpec c = cohesive_incline_case(in);
   // The prop [w, w + 0.5] x [0, h], downslope, on the same base.
   c.blocks.push_back(testing::blocks_of({Polygon{{{in.width, 0},
                                                   {in.width + 0.5, 0},
@@ -197,7 +196,7 @@ TEST(FactorOfSafety, AfterAnExcavationTheBlockLeftFollowsLimitEquilibrium) {
   c.stages.push_back(excavation);
   const PlasticResult r = with_factor_of_safety(c);
   EXPECT_EQ(r.factor_of_safety->stage, 1);
-  expect_bracket(r, cohesive_incline_factor(in, cohesion));
+  expect_bracket(r, cohesive_incline_factor(in));
 }
 
 }  // namespace
