@@ -13,6 +13,7 @@
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/increment.hpp>
 #include <bimrock/analysis/initial_state.hpp>
+#include <bimrock/analysis/installation.hpp>
 #include <bimrock/analysis/load_stepping.hpp>
 #include <bimrock/analysis/stage_structure.hpp>
 #include <bimrock/analysis/support_check.hpp>
@@ -122,92 +123,6 @@ PlasticResult with_statistics(PlasticResult result, const StageStructure& struct
   return result;
 }
 
-// What stands after stage `st`'s excavation and installation of blocks, before its bolts: the
-// blocks of the stage, the springs of `before` whose blocks both remain.
-Presence excavated(const Model& model, const Presence& before, int st) {
-  Presence dug{blocks_present(model, st), before.springs};
-  for (std::size_t k = 0; k < dug.springs.size(); ++k) {
-    const BoltSpring& s = model.bolt_springs[k];
-    dug.springs[k] = dug.springs[k] && dug.block(s.block_a) && dug.block(s.block_b);
-  }
-  return dug;
-}
-
-// The pretension of the springs installed now (in `now`, not in `before`) as a load on their
-// blocks: what a jack pulling each bolt's head towards its anchor exerts, -w E^T [T0, 0].
-Eigen::VectorXd jack_loads(const Model& model, const std::vector<YieldPoint>& points,
-                           const YieldPointIndex& index, const Presence& before,
-                           const Presence& now) {
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(model.n_dofs());
-  for (std::size_t k = 0; k < model.bolt_springs.size(); ++k) {
-    if (before.springs[k] || !now.springs[k])
-      continue;
-    const YieldPoint& p = points[static_cast<std::size_t>(index.spring_points[k])];
-    const double t0 = bolt_of(model, p).pretension;
-    if (t0 == 0.0)
-      continue;
-    const Eigen::VectorXd on_blocks =
-        -p.weight * local_operator(model, p).e.transpose() * Eigen::Vector2d(t0, 0.0);
-    load.segment<6>(6 * p.block_i) += on_blocks.head<6>();
-    load.segment<6>(6 * p.block_j) += on_blocks.tail<6>();
-  }
-  return load;
-}
-
-// Locks the springs installed now at the displacements u: from here each carries its pretension
-// (YieldPoint::initial) plus what its own displacement adds (docs/formulation.md, "Bolts").
-void lock_off(const Model& model, const std::vector<YieldPoint>& points,
-              const YieldPointIndex& index, const Presence& before, const Presence& now,
-              AnalysisState& state) {
-  for (std::size_t k = 0; k < model.bolt_springs.size(); ++k) {
-    if (before.springs[k] || !now.springs[k])
-      continue;
-    const auto at = static_cast<std::size_t>(index.spring_points[k]);
-    state.points[at] = PlasticState{};
-    state.points[at].installed_at = local_strain(model, points[at], state.u);
-  }
-}
-
-// Installs the blocks stage `st` adds (present in `now`): each interface they share with what
-// stands counts its relative displacement from here (state.installed, and its yield points'
-// installed_at), their yield points start afresh, and the loads of the earlier stages on them
-// (their weight) are returned, to be applied over the stage.
-Eigen::VectorXd install_blocks(const Model& model, const YieldPointIndex& index, int st,
-                               const Presence& now, AnalysisState& state) {
-  const Stage& stage = model.stages[static_cast<std::size_t>(st)];
-  Eigen::VectorXd placed = Eigen::VectorXd::Zero(model.n_dofs());
-  if (stage.installed.empty())
-    return placed;
-  std::vector<char> added(model.blocks.size(), 0);
-  for (const int b : stage.installed) {
-    added[static_cast<std::size_t>(b)] = 1;
-    if (const int p = index.block_points[static_cast<std::size_t>(b)]; p >= 0)
-      state.points[static_cast<std::size_t>(p)] = PlasticState{};
-  }
-  for (int k = 0; k < model.n_interfaces(); ++k) {
-    const Interface& f = model.interfaces[static_cast<std::size_t>(k)];
-    const bool touches = added[static_cast<std::size_t>(f.block_i)] ||
-                         (!f.is_support() && added[static_cast<std::size_t>(f.block_j)]);
-    if (!touches || !now.block(f.block_i) || (!f.is_support() && !now.block(f.block_j)))
-      continue;
-    const InterfaceState at = interface_state(model, k, state.u);
-    state.installed[k] = {at[0].delta, at[1].delta};
-    for (std::size_t end = 0; end < 2; ++end) {
-      if (const int p = index.interface_points[static_cast<std::size_t>(k)][end]; p >= 0) {
-        state.points[static_cast<std::size_t>(p)] = PlasticState{};
-        state.points[static_cast<std::size_t>(p)].installed_at = at[end].delta;
-      }
-    }
-  }
-  for (int k = 0; k < st; ++k) {
-    const Eigen::VectorXd earlier =
-        assemble_loads(model, model.stages[static_cast<std::size_t>(k)].loads);
-    for (const int b : stage.installed)
-      placed.segment<6>(6 * b) += earlier.segment<6>(6 * b);
-  }
-  return placed;
-}
-
 // Jacks the pretension `jack` of the bolts installed at stage `st`'s start against what stands
 // (without them), as one load increment recorded in the stage with stage factor 0 (its own loads
 // not yet applied). False, with result.stopped saying why, if it cannot be carried.
@@ -275,7 +190,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
   for (int st = 0; st < static_cast<int>(model.stages.size()); ++st) {
     const Stage& stage = model.stages[st];
     const Presence before = structure.present();
-    const Presence dug = excavated(model, before, st);
+    const Presence dug = before_bolts(model, before, st);
     if (dug != before) {
       unreleased +=
           excavation_forces(model, before, dug, result.state.u,
@@ -289,7 +204,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
     const Presence now = presence_at(model, st);
     const Eigen::VectorXd placed = install_blocks(model, index, st, now, result.state);
     if (now != dug) {
-      const Eigen::VectorXd jack = jack_loads(model, result.points, index, dug, now);
+      const Eigen::VectorXd jack = pretension_loads(model, result.points, index, dug, now);
       if (!jack.isZero(0.0) && !carry_pretension(model, st, structure, jack, options, tuning,
                                                  memory, on_increment, result, increment))
         return;

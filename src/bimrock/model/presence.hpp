@@ -21,6 +21,11 @@ struct Presence {
 /// for another stage.
 Presence presence_at(const Model& model, int stage);
 
+/// What stands at stage `stage`'s start once its excavation and installation of blocks are done,
+/// before its bolts are installed: its blocks, and the springs of `before` (what stood before
+/// it) whose two blocks remain.
+Presence before_bolts(const Model& model, const Presence& before, int stage);
+
 /// Every block and no spring: the structure of an elastic analysis.
 Presence every_block(const Model& model);
 
