@@ -124,13 +124,13 @@ PlasticResult with_statistics(PlasticResult result, const StageStructure& struct
 }
 
 // Jacks the pretension `jack` of the bolts installed at stage `st`'s start against what stands
-// (without them), as one load increment recorded in the stage with stage factor 0 (its own loads
-// not yet applied). False, with result.stopped saying why, if it cannot be carried.
+// (without them), as one load increment recorded in the stage as its increment 0, at stage factor
+// 0 (its own loads not yet applied). False, with result.stopped saying why, if it cannot be
+// carried.
 bool carry_pretension(const Model& model, int st, StageStructure& structure,
                       const Eigen::VectorXd& jack, const PlasticOptions& options,
                       const CandidateTuning& tuning, IncrementMemory& memory,
-                      const IncrementCallback& on_increment, PlasticResult& result,
-                      int& increment) {
+                      const IncrementCallback& on_increment, PlasticResult& result) {
   Stage jacking;
   jacking.name = model.stages[static_cast<std::size_t>(st)].name + " (bolt pretension)";
   const YieldEvaluator yield(model, result.points, &structure.present());
@@ -145,7 +145,7 @@ bool carry_pretension(const Model& model, int st, StageStructure& structure,
     jacked = carried.next.stage_factor;
     result.state = carried.next;
     result.state.stage_factor = 0.0;
-    IncrementRecord r = record(model, carried, st, ++increment, secs);
+    IncrementRecord r = record(model, carried, st, 0, secs);
     r.stage_factor = 0.0;
     result.history.push_back(std::move(r));
     if (on_increment)
@@ -200,13 +200,12 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
           result.state.points[p] = PlasticState{};  // gone with its blocks
       structure.stand_on(dug);
     }
-    int increment = 0;
     const Presence now = presence_at(model, st);
     const Eigen::VectorXd placed = install_blocks(model, index, st, now, result.state);
     if (now != dug) {
       const Eigen::VectorXd jack = pretension_loads(model, result.points, index, dug, now);
       if (!jack.isZero(0.0) && !carry_pretension(model, st, structure, jack, options, tuning,
-                                                 memory, on_increment, result, increment))
+                                                 memory, on_increment, result))
         return;
       lock_off(model, result.points, index, dug, now, result.state);
       structure.stand_on(now);
@@ -222,6 +221,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
     const double step = (stage.control ? stage.control->displacement : 1.0) / stage.increments;
     result.state.stage_factor = 0.0;
     std::optional<Trial> last;  // the last carried trial of the stage
+    int increment = 0;
     auto part_start = std::chrono::steady_clock::now();
     // Records a carried trial (a whole increment or a part of it) with the time since the last
     // part: the parts' times add up, none counts another's (nor the callback's).

@@ -19,7 +19,9 @@ namespace bimrock {
 
 struct IncrementRecord {
   int stage = 0;
-  int increment = 0;           ///< 1-based within the stage, counting bisected steps
+  /// 1-based within the stage, counting bisected steps; 0: the jacking of the pretension of bolts
+  /// installed at the stage's start
+  int increment = 0;
   double stage_factor = 0.0;   ///< after the increment
   std::vector<Vec2> monitors;  ///< monitor displacements after the increment [m]
   int yielding_points = 0;     ///< points with plastic flow in this increment
