@@ -211,5 +211,51 @@ TEST(Bolt, TheFactorOfSafetyKeepsTheBoltsCapacity) {
   EXPECT_LT(r.factor_of_safety->collapse->failed - r.factor_of_safety->lower, 1.1e-3 * f);
 }
 
+// Excavating a bolt's head block takes the bolt with it: the middle of three stacked squares,
+// squeezed between the anchor it holds and the joint above it, is freed of both at once (their
+// forces on it are opposite), so it ends where it started, unstrained. No gravity.
+TEST(Bolt, ExcavatingTheHeadsBlockReleasesTheBoltWithIt) {
+  CaseSpec c;
+  c.file = "three";
+  c.block_materials = {testing::rock(1e14, 0.0)};
+  c.joint_materials = {testing::springs("joint", kJointStiffness, kJointStiffness)};
+  c.default_joint = "joint";
+  c.blocks = testing::blocks_of({Polygon{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}},
+                                 Polygon{{{0, 1}, {1, 1}, {1, 2}, {0, 2}}},
+                                 Polygon{{{0, 2}, {1, 2}, {1, 3}, {0, 3}}}});
+  c.supports = {testing::fixed({0, 0}, {1, 0})};
+  StageSpec excavate = stage("excavate the top", 1);
+  excavate.excavate =
+      BlockSelector{BlockSelector::Kind::box, {}, BBox{{0.1, 2.1}, {0.9, 2.9}}, {}, {},
+                    {0, "stages[1].excavate"}};
+  c.stages = {stage("install", 1), excavate};
+  Model m = build_model(c);
+  const auto block_at = [&](double y) {
+    for (int b = 0; b < m.n_blocks(); ++b)
+      if (std::abs(m.blocks[b].centroid.y() - y) < 1e-9)
+        return b;
+    return -1;
+  };
+  const int top = block_at(2.5);
+  const int middle = block_at(1.5);
+  Bolt b;
+  b.name = "anchor";
+  b.from = Vec2(0.5, 3.0);
+  b.to = Vec2(0.5, 1.5);
+  b.axial_stiffness = kBoltStiffness;
+  b.capacity = kCapacity;
+  b.pretension = kPretension;
+  b.per_model = kBolts;
+  m.bolts = {b};
+  m.bolt_springs = {BoltSpring{0, top, middle, b.from, b.to, Vec2(0.0, -1.0)}};
+  const PlasticResult r = run_plastic_analysis(m, {});
+  ASSERT_FALSE(r.collapse || r.stopped);
+  // Jacked, the top block moved down by the pretension over the joint's stiffness; excavated,
+  // the middle one is back where it was.
+  const double squeeze = kBolts * kPretension / kJointStiffness;
+  EXPECT_NEAR(r.state.u(6 * top + 1), -squeeze, 1e-5 * squeeze);
+  EXPECT_LT(r.state.u.segment<6>(6 * middle).cwiseAbs().maxCoeff(), 1e-9 * squeeze);
+}
+
 }  // namespace
 }  // namespace bimrock
