@@ -59,20 +59,24 @@ int upper_block(const Model& m) {
   return m.blocks[0].centroid.y() > 1.0 ? 0 : 1;
 }
 
-// An anchored bolt from the top of the upper block to the lower block's centre, installed at
-// stage 0.
+// A vertical anchored bolt from `head` down to `anchor` (blocks `a` and `b`), installed at stage 0.
+void anchor_between(Model& m, int a, Vec2 head, int b, Vec2 anchor, double pretension) {
+  Bolt bolt;
+  bolt.name = "anchor";
+  bolt.from = head;
+  bolt.to = anchor;
+  bolt.axial_stiffness = kBoltStiffness;
+  bolt.capacity = kCapacity;
+  bolt.pretension = pretension;
+  bolt.per_model = 1.0 / kSpacing;
+  m.bolts = {bolt};
+  m.bolt_springs = {BoltSpring{0, a, b, head, anchor, Vec2(0.0, -1.0)}};
+}
+
+// An anchored bolt from the top of the upper block to the lower block's centre.
 void bolt_through(Model& m, double pretension) {
-  Bolt b;
-  b.name = "anchor";
-  b.from = Vec2(0.5, 2.0);
-  b.to = Vec2(0.5, 0.5);
-  b.axial_stiffness = kBoltStiffness;
-  b.capacity = kCapacity;
-  b.pretension = pretension;
-  b.per_model = 1.0 / kSpacing;
-  m.bolts = {b};
   const int up = upper_block(m);
-  m.bolt_springs = {BoltSpring{0, up, 1 - up, b.from, b.to, Vec2(0.0, -1.0)}};
+  anchor_between(m, up, Vec2(0.5, 2.0), 1 - up, Vec2(0.5, 0.5), pretension);
 }
 
 StageSpec stage(const std::string& name, int increments, Vec2 force = Vec2::Zero()) {
@@ -116,11 +120,17 @@ TEST(Bolt, PretensionCompressesTheJointByItsForce) {
   EXPECT_NEAR(head.y(), -kBolts * kPretension / kJointStiffness, 1e-5 * kPretension / 1e8);
 }
 
-// The gap of the joint's points after pulling the upper block up by `pull` [N].
-PlasticResult pulled(double pull, int increments = 1) {
-  Model m = stacked({stage("install", 1), stage("pull", increments, Vec2(0.0, pull))});
-  bolt_through(m, kPretension);
-  return run_plastic_analysis(m, {});
+// The pretensioned pair pulled up by `pull` [N] at the upper block's centroid, and its analysis.
+struct Pulled {
+  Model model;
+  PlasticResult result;
+};
+
+Pulled pulled(double pull, int increments = 1) {
+  Pulled p{stacked({stage("install", 1), stage("pull", increments, Vec2(0.0, pull))}), {}};
+  bolt_through(p.model, kPretension);
+  p.result = run_plastic_analysis(p.model, {});
+  return p;
 }
 
 bool joint_open(const PlasticResult& r) {
@@ -133,26 +143,24 @@ bool joint_open(const PlasticResult& r) {
 TEST(Bolt, APullOpensThePretensionedJointAtTheSeparationLoad) {
   const double k_j = kJointStiffness * 1.0 * 1.0;
   const double separation = kBolts * kPretension * (1.0 + kBolts * kBoltStiffness / k_j);
-  const PlasticResult below = pulled(0.999 * separation);
-  ASSERT_FALSE(below.collapse);
-  EXPECT_FALSE(joint_open(below));
+  const Pulled below = pulled(0.999 * separation);
+  ASSERT_FALSE(below.result.collapse);
+  EXPECT_FALSE(joint_open(below.result));
   // Closed, the joint and the bolts share the pull by their stiffnesses.
-  Model m = stacked({stage("install", 1), stage("pull", 1, Vec2(0.0, 0.999 * separation))});
-  bolt_through(m, kPretension);
   const double lift = 0.999 * separation / (k_j + kBolts * kBoltStiffness);
-  EXPECT_NEAR(bolt_force(m, below)(0), kPretension + kBoltStiffness * lift, 1e-5 * kPretension);
-  const PlasticResult above = pulled(1.001 * separation);
-  ASSERT_FALSE(above.collapse);
-  EXPECT_TRUE(joint_open(above));
+  EXPECT_NEAR(bolt_force(below.model, below.result)(0), kPretension + kBoltStiffness * lift,
+              1e-5 * kPretension);
+  const Pulled above = pulled(1.001 * separation);
+  ASSERT_FALSE(above.result.collapse);
+  EXPECT_TRUE(joint_open(above.result));
   // Open, the bolts carry the pull alone.
-  Model n = stacked({stage("install", 1), stage("pull", 1, Vec2(0.0, 1.001 * separation))});
-  bolt_through(n, kPretension);
-  EXPECT_NEAR(bolt_force(n, above)(0), 1.001 * separation / kBolts, 1e-9 * kPretension);
+  EXPECT_NEAR(bolt_force(above.model, above.result)(0), 1.001 * separation / kBolts,
+              1e-9 * kPretension);
 }
 
 TEST(Bolt, ThePulledBlockLiftsOffWhenTheBoltsYield) {
   const double pull = 2.0 * kBolts * kCapacity;
-  const PlasticResult r = pulled(pull, 8);
+  const PlasticResult r = pulled(pull, 8).result;
   ASSERT_TRUE(r.collapse);
   EXPECT_EQ(r.collapse->stage, 1);
   const double lift_off = kBolts * kCapacity / pull;  // stage factor 0.5
@@ -238,16 +246,7 @@ TEST(Bolt, ExcavatingTheHeadsBlockReleasesTheBoltWithIt) {
   };
   const int top = block_at(2.5);
   const int middle = block_at(1.5);
-  Bolt b;
-  b.name = "anchor";
-  b.from = Vec2(0.5, 3.0);
-  b.to = Vec2(0.5, 1.5);
-  b.axial_stiffness = kBoltStiffness;
-  b.capacity = kCapacity;
-  b.pretension = kPretension;
-  b.per_model = kBolts;
-  m.bolts = {b};
-  m.bolt_springs = {BoltSpring{0, top, middle, b.from, b.to, Vec2(0.0, -1.0)}};
+  anchor_between(m, top, Vec2(0.5, 3.0), middle, Vec2(0.5, 1.5), kPretension);
   const PlasticResult r = run_plastic_analysis(m, {});
   ASSERT_FALSE(r.collapse || r.stopped);
   // Jacked, the top block moved down by the pretension over the joint's stiffness; excavated,

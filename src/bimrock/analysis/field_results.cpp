@@ -74,6 +74,7 @@ std::vector<SpringState> spring_states(const Model& model, const std::vector<cha
     r.force = Eigen::Vector2d(bolt.pretension, 0.0) +
               Eigen::Vector2d(bolt.axial_stiffness, bolt.shear_stiffness)
                   .cwiseProduct(r.delta - r.plastic);
+    r.capacity_used = r.force(0) / bolt.capacity;
     r.yielded = ps.slip > 0.0;
   }
   return out;

@@ -40,7 +40,8 @@ struct SpringState {
   Eigen::Vector2d delta = Eigen::Vector2d::Zero();  ///< [elongation, shear] since installation [m]
   Eigen::Vector2d force = Eigen::Vector2d::Zero();  ///< [axial, shear] [N]; axial > 0 is tension
   Eigen::Vector2d plastic = Eigen::Vector2d::Zero();  ///< plastic [elongation, shear] [m]
-  bool yielded = false;                               ///< it has flowed plastically
+  double capacity_used = 0.0;  ///< axial force over the tensile capacity (1: yielding in tension)
+  bool yielded = false;        ///< it has flowed plastically
 };
 
 /// Plastic parts to subtract from the elastic strains, where a nonlinear analysis has them:

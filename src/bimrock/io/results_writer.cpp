@@ -303,8 +303,7 @@ ElasticSolution PlasticResultsWriter::finish(const PlasticResult& result) {
     std::vector<double> bolt_use(fields.springs.size(), NAN);
     for (std::size_t k = 0; k < bolt_use.size(); ++k)
       if (fields.springs[k].standing)
-        bolt_use[k] = fields.springs[k].force(0) /
-                      model_.bolts[static_cast<std::size_t>(model_.bolt_springs[k].bolt)].capacity;
+        bolt_use[k] = fields.springs[k].capacity_used;
     write_block_picture(model_,
                         {"final state (displacements magnified)", fields.u, 0.05,
                          state_marks(model_, index_, result.state.points), 1000,

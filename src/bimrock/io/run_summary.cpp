@@ -212,15 +212,11 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
       int standing = 0;
       int yielded = 0;
       double most_used = 0.0;
-      for (std::size_t k = 0; k < fields.springs.size(); ++k) {
-        const SpringState& r = fields.springs[k];
+      for (const SpringState& r : fields.springs) {
         standing += r.standing ? 1 : 0;
         yielded += r.yielded ? 1 : 0;
         if (r.standing)
-          most_used = std::max(
-              most_used,
-              r.force(0) /
-                  model.bolts[static_cast<std::size_t>(model.bolt_springs[k].bolt)].capacity);
+          most_used = std::max(most_used, r.capacity_used);
       }
       j["bolts"] = {{"bolts", model.bolts.size()},
                     {"springs", model.bolt_springs.size()},

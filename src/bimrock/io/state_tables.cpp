@@ -90,7 +90,7 @@ void write_bolts_csv(const Model& model, const ElasticSolution& fields,
                        bolt.kind == BoltSpec::Kind::anchored ? "anchored" : "grouted", bolt.stage,
                        s.block_a, s.block_b, s.a.x(), s.a.y(), s.b.x(), s.b.y(), r.standing ? 1 : 0,
                        r.force(0), r.force(1), r.delta(0), r.delta(1), r.plastic(0), r.plastic(1),
-                       r.force(0) / bolt.capacity, r.yielded ? 1 : 0);
+                       r.capacity_used, r.yielded ? 1 : 0);
   }
   check_written(out, file);
 }
