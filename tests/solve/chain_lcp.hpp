@@ -74,6 +74,16 @@ inline void make_chain(int blocks, unsigned seed, ChainLcp& out, int uncoupled =
   ASSERT_TRUE(out.k.factorize(out.k_lower));
 }
 
+// A chain whose flows are not its yield functions' gradients: M is not symmetric, but positive
+// definite (x.M x > 0 for x != 0), so a P-matrix with one solution for every q.
+inline void make_nonassociated_chain(int blocks, unsigned seed, ChainLcp& chain) {
+  make_chain(blocks, seed, chain, -1, 0.02);
+  const MatrixXd sym = 0.5 * (chain.m_dense + chain.m_dense.transpose());
+  ASSERT_GT((chain.m_dense - chain.m_dense.transpose()).cwiseAbs().maxCoeff(),
+            1e-3 * chain.m_dense.cwiseAbs().maxCoeff());
+  ASSERT_GT(Eigen::SelfAdjointEigenSolver<MatrixXd>(sym).eigenvalues().minCoeff(), 0.0);
+}
+
 // The second method: (M_AA + D) z_A = -q_A + D center_A with D = factor N_rr (no damping:
 // M_AA z_A = -q_A), formed densely and solved by LU; z = 0 off A.
 inline VectorXd dense_solution(const MatrixXd& m_dense, const CholmodMatrix& n, const VectorXd& q,

@@ -21,16 +21,7 @@ using Eigen::VectorXd;
 using testing::ChainLcp;
 using testing::dense_solution;
 using testing::every;
-using testing::make_chain;
-
-void make_nonassociated_chain(int blocks, unsigned seed, ChainLcp& chain) {
-  make_chain(blocks, seed, chain, -1, 0.02);
-  // The premise: M is not symmetric, but positive definite (x.M x > 0 for x != 0).
-  const MatrixXd sym = 0.5 * (chain.m_dense + chain.m_dense.transpose());
-  ASSERT_GT((chain.m_dense - chain.m_dense.transpose()).cwiseAbs().maxCoeff(),
-            1e-3 * chain.m_dense.cwiseAbs().maxCoeff());
-  ASSERT_GT(Eigen::SelfAdjointEigenSolver<MatrixXd>(sym).eigenvalues().minCoeff(), 0.0);
-}
+using testing::make_nonassociated_chain;
 
 TEST(UnsymmetricTangent, SolvesTheEquationsOfAnActiveSetAsTheDenseBlockDoes) {
   ChainLcp chain;

@@ -4,6 +4,7 @@
 #include <optional>
 #include <utility>
 
+#include <bimrock/solve/fischer_burmeister_newton.hpp>
 #include <bimrock/solve/unsymmetric_tangent.hpp>
 #include <bimrock/solve/working_set_lcp.hpp>
 
@@ -75,8 +76,18 @@ class LcpOnZone final : public LcpColumns {
       all[static_cast<std::size_t>(r)] = r;
     return {columns(all), q_};
   }
-  [[nodiscard]] SplitLcp split(const SparseMatrix& s_lower) const {
-    SplitLcp split{&s_lower, &sys_.c, &sys_.phi, &sys_.n, q_, {}, {}};
+  // M in its sparse parts. Under displacement control M = N - C' S^-1 Phi with
+  // C' = C - control_term control^T: the control couples every row to the monitor's few
+  // unknowns.
+  [[nodiscard]] SplitLcp split(const SparseMatrix& s_lower) {
+    const SparseMatrix* c = &sys_.c;
+    if (control_) {
+      const SparseMatrix term = control_term_.sparseView();
+      const SparseMatrix monitor = control_->sparseView();
+      controlled_c_ = sys_.c - SparseMatrix(term * monitor.transpose());
+      c = &controlled_c_;
+    }
+    SplitLcp split{&s_lower, c, &sys_.phi, &sys_.n, q_, {}, {}};
     for (Eigen::Index i = 0; i < size(); ++i) {
       split.group.push_back(group(i));
       split.group_rank.push_back(group_rank(i));
@@ -91,6 +102,7 @@ class LcpOnZone final : public LcpColumns {
   const Eigen::VectorXd* control_;
   Eigen::VectorXd control_term_;
   Eigen::VectorXd q_;
+  SparseMatrix controlled_c_;  // C' (split(), under displacement control)
   mutable std::optional<bool> symmetric_;
 };
 
@@ -164,6 +176,21 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
   if (tuning_.active_set && !decided(r)) {
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
+  }
+  if (tuning_.active_set && !decided(r) && lcp.control) {
+    // Displacement control (M not symmetric: no quadratic program, so no projected Newton
+    // behind the block rule): on the equilibrium path the increment has a solution, and the
+    // semismooth Newton method, whose merit falls at every step, goes on from the iterate.
+    // Under load control it is not tried: near a limit load the increments that fail have no
+    // solution, where its merit only levels off, and what decides them is a proof.
+    const Eigen::VectorXd start =
+        r.z.size() == m && r.z.allFinite() ? r.z : Eigen::VectorXd::Zero(m);
+    LcpResult newton =
+        fischer_burmeister_newton(on_zone.split(stiffness.lower()), stiffness.factor(), start);
+    out.active_set_iterations += newton.steps;
+    out.tangent_factorizations += newton.steps;
+    if (newton.status == LcpStatus::solved)
+      r = std::move(newton);
   }
   if (tuning_.active_set && !decided(r)) {
     // Lemke on the rows that were violated or active (and those its solution violates): the

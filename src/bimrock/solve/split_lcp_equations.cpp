@@ -13,6 +13,16 @@ namespace {
 constexpr double kSingularLocal = 1e-12;
 }  // namespace
 
+void add_plastic_coupling(const CholmodMatrix& phi, const CholmodMatrix& c_transposed,
+                          const Eigen::Index* rows, const Eigen::MatrixXd& local,
+                          std::vector<Eigen::Triplet<double, std::int64_t>>& out) {
+  for (Eigen::Index i = 0; i < local.rows(); ++i)
+    for (CholmodMatrix::InnerIterator p(phi, rows[i]); p; ++p)
+      for (Eigen::Index j = 0; j < local.cols(); ++j)
+        for (CholmodMatrix::InnerIterator c(c_transposed, rows[j]); c; ++c)
+          out.emplace_back(p.row(), c.row(), p.value() * local(i, j) * c.value());
+}
+
 SplitLcpEquations::SplitLcpEquations(const SplitLcp& lcp, const SpdSolver& s)
     : lcp_(lcp), s_(s), c_transposed_(lcp.c->transpose()), n_transposed_(lcp.n->transpose()) {}
 

@@ -37,6 +37,14 @@ struct SplitLcp {
   std::vector<int> group_rank;             ///< per row: independent rows of its group at most
 };
 
+/// Appends the triplets of Phi_R L C_R (n x n) for the rows R = rows[0 .. L.rows()) of one
+/// group and a local matrix L: a plastic part of a reduced tangent. It couples only the unknowns
+/// of the blocks the group's yield point joins, so a tangent keeps S's pattern. `c_transposed`
+/// holds the rows of C as columns.
+void add_plastic_coupling(const CholmodMatrix& phi, const CholmodMatrix& c_transposed,
+                          const Eigen::Index* rows, const Eigen::MatrixXd& local,
+                          std::vector<Eigen::Triplet<double, std::int64_t>>& out);
+
 class SplitLcpEquations : public ActiveSetEquations {
  public:
   [[nodiscard]] Eigen::Index size() const override { return lcp_.q.size(); }

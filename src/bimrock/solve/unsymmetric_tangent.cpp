@@ -34,14 +34,7 @@ ActiveSetEquations::Solution UnsymmetricTangentEquations::solve(
   // unknowns of the blocks its yield point joins, so the tangent keeps S's pattern.
   std::vector<Eigen::Triplet<double, std::int64_t>> plastic;
   for (const Local& l : locals)
-    for (Eigen::Index i = 0; i < l.inverse.rows(); ++i)
-      for (CholmodMatrix::InnerIterator p(*lcp_.phi, active[l.first + static_cast<std::size_t>(i)]);
-           p; ++p)
-        for (Eigen::Index j = 0; j < l.inverse.cols(); ++j)
-          for (CholmodMatrix::InnerIterator c(c_transposed_,
-                                              active[l.first + static_cast<std::size_t>(j)]);
-               c; ++c)
-            plastic.emplace_back(p.row(), c.row(), p.value() * l.inverse(i, j) * c.value());
+    add_plastic_coupling(*lcp_.phi, c_transposed_, &active[l.first], l.inverse, plastic);
   CholmodMatrix part(n, n);
   part.setFromTriplets(plastic.begin(), plastic.end());
   lu_->tangent = s_full_ - part;
