@@ -195,8 +195,8 @@ LcpResult fischer_burmeister_newton(const SplitLcp& lcp, const SpdSolver& s, con
   Iterate best = current;
   std::vector<double> merits{current.merit};  // after each step
   LcpStatus failure = LcpStatus::iteration_limit;
-  int steps = 0;
-  for (; steps <= options.max_iterations; ++steps) {
+  int steps = 0;  // directions, each an LU of the tangent
+  for (;;) {
     if (method.worst(current) <= options.accuracy) {
       // A root of Phi has z >= 0 up to round-off: the answer is z projected, measured again.
       Iterate projected = method.measured(current.z.cwiseMax(0.0));
@@ -207,7 +207,9 @@ LcpResult fischer_burmeister_newton(const SplitLcp& lcp, const SpdSolver& s, con
       break;
     VectorXd dz;
     VectorXd dw;
-    if (!method.direction(current, dz, dw)) {
+    const bool found = method.direction(current, dz, dw);
+    ++steps;
+    if (!found) {
       failure = LcpStatus::numerical_failure;
       break;
     }
