@@ -177,21 +177,8 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
   }
-  if (tuning_.active_set && !decided(r) && lcp.control) {
-    // Displacement control (M not symmetric: no quadratic program, so no projected Newton
-    // behind the block rule): on the equilibrium path the increment has a solution, and the
-    // semismooth Newton method, whose merit falls at every step, goes on from the iterate.
-    // Under load control it is not tried: near a limit load the increments that fail have no
-    // solution, where its merit only levels off, and what decides them is a proof.
-    const Eigen::VectorXd start =
-        r.z.size() == m && r.z.allFinite() ? r.z : Eigen::VectorXd::Zero(m);
-    LcpResult newton =
-        fischer_burmeister_newton(on_zone.split(stiffness.lower()), stiffness.factor(), start);
-    out.active_set_iterations += newton.steps;
-    out.tangent_factorizations += newton.steps;
-    if (newton.status == LcpStatus::solved)
-      r = std::move(newton);
-  }
+  const Eigen::VectorXd iterate =
+      r.z.size() == m && r.z.allFinite() ? r.z : Eigen::VectorXd::Zero(m);
   if (tuning_.active_set && !decided(r)) {
     // Lemke on the rows that were violated or active (and those its solution violates): the
     // columns of the other rows are never formed.
@@ -212,6 +199,21 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     out.pivots += r.steps;
     if (!decided(r))
       r = complete_.solve(dense);
+  }
+  if (tuning_.active_set && !decided(r) && lcp.control) {
+    // Displacement control, where every method above has left the increment undecided (M is
+    // not symmetric: no quadratic program, so no projected Newton behind the block rule). On
+    // the equilibrium path the increment has a solution, and the semismooth Newton method,
+    // whose merit falls at every step, goes on from the active-set method's iterate. It comes
+    // last because where the others decide, they do it for less. Under load control it is not
+    // tried: near a limit load the increments left undecided have no solution, where its merit
+    // only levels off; what decides them is a proof.
+    LcpResult newton =
+        fischer_burmeister_newton(on_zone.split(stiffness.lower()), stiffness.factor(), iterate);
+    out.active_set_iterations += newton.steps;
+    out.tangent_factorizations += newton.steps;
+    if (newton.status == LcpStatus::solved)
+      r = std::move(newton);
   }
   if (r.status == LcpStatus::solved)
     return finish(Outcome::solved, r);
