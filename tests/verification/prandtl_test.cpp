@@ -45,10 +45,10 @@
 // semismooth Newton method do not converge, Lemke's rays on such LCPs are no certificates, and
 // the complete method serves LCPs of at most 1 000 rows: the runs stop with "could not be solved
 // accurately, nor shown to have no solution". Measured (joint penalty 100 / 1e4): B/h = 4 stops
-// at 5.997 / 5.994 c, B/h = 6 reaches its plateau at 6.000 c / stops at 5.999 c, B/h = 8 stops
-// at 5.317 / 5.228 c: every stop is above (2 + pi) c = 5.142 c, as the upper bound theorem
-// asks, but B/h = 8 stops before its plateau, at loads 1.7% apart. The pressures carried up to
-// a stop are checked solutions, so the test keeps the largest of them.
+// at 5.991 / 5.994 c, B/h = 6 at 5.996 / 5.999 c, B/h = 8 at 5.317 / 5.228 c: every stop is
+// above (2 + pi) c = 5.142 c, as the upper bound theorem asks, but B/h = 8 stops before its
+// plateau, at loads 1.7% apart. The pressures carried up to a stop are checked solutions, so
+// the test keeps the largest of them.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -246,7 +246,7 @@ TEST(Prandtl, InterfacesOnlyFindTheFortyFiveDegreeWedgeMechanism) {
 // The upper bound theorem: every mechanism of the interfaces-only block mass is a Tresca
 // mechanism (rigid blocks with slip along the joints, dissipating c per unit slip), so its
 // collapse pressure cannot be below (2 + pi) c; and the limit load of a perfectly plastic body
-// does not depend on its elastic stiffness. Measured (68 s): every run stays above (2 + pi) c;
+// does not depend on its elastic stiffness. Measured (48 s): every run stays above (2 + pi) c;
 // B/h = 4 and 6 agree between the stiffnesses to 0.06%, B/h = 8 stops undecided before its
 // plateau at 5.317 c (penalty 100) and 5.228 c (1e4), 1.7% apart (the file comment says why).
 TEST(Prandtl, DISABLED_InterfacesOnlyCollapseIsAnUpperBoundWhateverTheJointStiffness) {
