@@ -177,8 +177,11 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
   }
-  const Eigen::VectorXd iterate =
-      r.z.size() == m && r.z.allFinite() ? r.z : Eigen::VectorXd::Zero(m);
+  // Under displacement control, where the semismooth Newton method below would start: the
+  // active-set method's iterate (kept only there, Lemke replaces r).
+  Eigen::VectorXd iterate;
+  if (lcp.control)
+    iterate = r.z.size() == m && r.z.allFinite() ? r.z : Eigen::VectorXd::Zero(m);
   if (tuning_.active_set && !decided(r)) {
     // Lemke on the rows that were violated or active (and those its solution violates): the
     // columns of the other rows are never formed.
