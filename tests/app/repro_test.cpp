@@ -216,6 +216,25 @@ TEST(Repro, EveryCutBlockIsConvexWhereCgalsOptimalPartitionIsNot) {
   EXPECT_NEAR(area, 5221.6353278, 1e-6);
 }
 
+// Joints that nearly meet leave cut blocks with exact corners closer than the length tolerance,
+// and blocks thinner than it (block_generation.cpp). The first lose the extra corner, the second
+// are left out; the blocks are still convex and tile the outline less the tunnel,
+// 5250 - 27.5529222 = 5222.4470778 m^2 (shoelace of the case's polygons). Before, a valid case
+// was rejected with "domain block 352: vertex 2 duplicates an earlier vertex".
+TEST(Repro, CornersCloserThanTheToleranceAreMergedAndZeroAreaBlocksLeftOut) {
+  const fs::path p =
+      fs::path(BIMROCK_SOURCE_DIR) / "tests/app/data/repro/corners_closer_than_tolerance.yaml";
+  const Model model = build_model(read_case_file(p.string()).spec);
+  double area = 0.0;
+  for (const Block& b : model.blocks) {
+    EXPECT_EQ(check_convex_polygon(b.polygon, model.tolerance).defect, PolygonDefect::none)
+        << b.source.item;
+    area += b.area;
+  }
+  EXPECT_GT(model.n_blocks(), 1000);
+  EXPECT_NEAR(area, 5222.4470778, 1e-6);
+}
+
 // ---- The output folder of `run`, checked before solving ----------------------------------------
 
 const std::string kElastic =

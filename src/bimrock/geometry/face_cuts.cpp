@@ -47,9 +47,17 @@ std::optional<Hit> first_hit(Face_handle f, Vertex_handle s, const Kernel::Ray_2
     if (p == e->target()->point())
       best->vertex = e->target();
   };
+  const Point ahead = origin + ray.to_vector();
   for_each_boundary_halfedge(f, [&](Halfedge_handle e) {
     if (e->source() == s || e->target() == s)
       return;  // they touch the ray at s only
+    // An edge wholly on one side of the ray's line is not met. Two orientation tests, which the
+    // interval filter decides, say so; do_intersect itself intersects the two lines, which for
+    // an edge parallel to the ray (a joint of a parallel set) needs exact arithmetic on the
+    // corners' construction history.
+    const CGAL::Orientation side = CGAL::orientation(origin, ahead, e->source()->point());
+    if (side != CGAL::COLLINEAR && side == CGAL::orientation(origin, ahead, e->target()->point()))
+      return;
     const Kernel::Segment_2 seg(e->source()->point(), e->target()->point());
     if (!CGAL::do_intersect(ray, seg))
       return;

@@ -34,19 +34,21 @@ int line_of(const DomainSpec& spec, std::string item) {
   return spec.source.line;
 }
 
-// Exact cutting leaves no zero-area sliver but may leave an edge shorter than the model's length
-// tolerance where joints nearly meet (geometry/block_cutter.hpp). Its second vertex is dropped:
-// the block moves by less than the tolerance, and interface detection, which works to the same
-// tolerance, still pairs it with its neighbours.
+// Exact cutting places every corner exactly, but corners that joints make nearly meet (closer
+// than the model's length tolerance) round to neighbouring doubles. The second of two such
+// corners is dropped: the block moves by less than the tolerance, and interface detection, which
+// works to the same tolerance, still pairs it with its neighbours. A block whose corners all lie
+// within the tolerance of one or two points (a face of positive exact area, e.g. 1e-13 m^2, thinner
+// than the tolerance) keeps fewer than 3 vertices: it holds no rock, and the caller leaves it out.
 Polygon without_short_edges(const Polygon& p, double tol) {
   Polygon out;
   for (const Vec2& v : p.vertices) {
     if (out.vertices.empty() || (v - out.vertices.back()).norm() > tol)
       out.vertices.push_back(v);
   }
-  while (out.vertices.size() > 3 && (out.vertices.back() - out.vertices.front()).norm() <= tol)
+  while (out.vertices.size() > 1 && (out.vertices.back() - out.vertices.front()).norm() <= tol)
     out.vertices.pop_back();
-  return out.vertices.size() >= 3 ? out : p;
+  return out;
 }
 
 // The number of blocks cutting `spec` yields, estimated from its traces before they are
@@ -161,10 +163,12 @@ GeneratedBlocks generate_blocks(const DomainSpec& spec, const std::string& file,
     }
     std::vector<int> cells_of(polygons.size(), 0);
     for (VoronoiCell& c : cells) {
-      // A clipped Voronoi cell can collapse to a segment (zero area, corners repeated): it holds
-      // no rock, so it is left out (and counted).
+      // A cut block thinner than the tolerance, or a clipped Voronoi cell collapsed to a segment,
+      // holds no rock, so it is left out (and counted). Zero area is judged as the model's
+      // polygon check judges it: against tol times the polygon's size.
       c.polygon = without_short_edges(c.polygon, tol);
-      if (c.polygon.size() < 3 || std::abs(signed_area(c.polygon)) <= tol * tol) {
+      if (c.polygon.size() < 3 ||
+          std::abs(signed_area(c.polygon)) <= tol * bbox_of(c.polygon).diagonal()) {
         ++out.degenerate_cells;
         continue;
       }

@@ -20,7 +20,7 @@ struct GeneratedBlocks {
   std::map<std::pair<int, int>, std::string> joint_between_parents;
   CutStats stats;
   int subdivided = 0;        ///< cut blocks split into cells
-  int degenerate_cells = 0;  ///< Voronoi cells of zero area left out
+  int degenerate_cells = 0;  ///< blocks and Voronoi cells of zero area (to the tolerance) left out
 
   /// The joint material between generated blocks i and j ("" : intact rock).
   [[nodiscard]] std::string joint_between(int i, int j) const;
