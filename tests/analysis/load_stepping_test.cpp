@@ -157,5 +157,30 @@ TEST(LoadStepping, AFailureProvenAtTheFirstLoadIsAnInstabilityNotABracket) {
   EXPECT_FALSE(later.step(0.1, {.first_load = false}).unstable_at_first_load);
 }
 
+TEST(LoadStepping, UndecidedTrialsBelowAProofLeaveTheBracketAsProvenAfterAFew) {
+  // A structure whose collapse is proven only from 0.7 on (a bound above F), and whose trials
+  // between F and 0.7 are undecided; those up to F carry. The bracket [carried, 0.7] holds F.
+  Structure s{.answer = [](double from, double step) {
+    if (from + step <= kCollapse)
+      return carried_to(from + step);
+    return from + step >= 0.7 ? collapsed((0.7 - from) / step) : failed();
+  }};
+  const SteppedIncrement out = s.step(1.0);
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_NEAR(out.failed, 0.7, 1e-12);
+  EXPECT_LE(out.carried, kCollapse);
+  std::size_t undecided = 0;
+  double at = 0.0;
+  for (const double step : s.tried) {
+    // Replays the trials: those that neither carried nor reached 0.7 were undecided.
+    const double reached = at + step;
+    if (reached <= kCollapse)
+      at = reached;
+    else if (reached < 0.7)
+      ++undecided;
+  }
+  EXPECT_EQ(undecided, 3u);  // then the bracket stands: each costs a whole search
+}
+
 }  // namespace
 }  // namespace bimrock

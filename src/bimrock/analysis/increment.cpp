@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 
+#include <bimrock/analysis/associated_bound.hpp>
 #include <bimrock/assembly/yield_modes.hpp>  // kOpeningMode
 
 namespace bimrock {
@@ -273,8 +274,21 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
         t.proven_fraction = solution.proven_fraction;
         return collapse(sys, solution.ray, ctx, std::move(t));
       }
-      if (solution.outcome == Outcome::undecided)
+      if (solution.outcome == Outcome::undecided) {
+        // Non-associated flow: no flow rule carries what associated flow cannot.
+        const std::optional<AssociatedBound> bound =
+            associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver);
+        clock.lap("increments: LCP");
+        if (bound) {
+          t.active_set_iterations += bound->active_set_iterations;
+          t.tangent_factorizations += bound->tangent_factorizations;
+          t.pivots += bound->pivots;
+          t.proven_fraction = bound->proven_fraction;
+          t.du = bound->du;
+          return collapse(sys, bound->ray, ctx, std::move(t));
+        }
         return t;  // failed: the caller cuts the step
+      }
       z = solution.z;
     }
     // Update: the displacements of the whole model (a solve with K's factor) and the plastic

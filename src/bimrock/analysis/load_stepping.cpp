@@ -12,6 +12,8 @@ namespace {
 constexpr double kAimAtBound = 0.9;
 /// At most this many kinks of softening laws inside one step.
 constexpr int kMostKinks = 100;
+/// Undecided trials once a failure is proven: then the bracket stands (see below).
+constexpr int kUndecidedInBracket = 3;
 
 }  // namespace
 
@@ -50,6 +52,7 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   std::optional<double> proven;  // stage factor of the nearest proof
   bool aim = false;              // aim at the certificate's bound
   bool retry = false;            // a numerical failure, then a carried part: try the rest again
+  int undecided = 0;             // trials neither carried nor proven to fail, once one was
   if (t.status == Trial::Status::collapse) {
     failing_step *= t.proven_fraction;
     proven = out.carried + failing_step;
@@ -85,6 +88,12 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
     } else {
       failing_step = trial;
       aim = false;
+      // Between a load carried and one proven to fail, each undecided trial costs a whole
+      // search (the complete method, Lemke on the whole LCP, or the associated flow's proof of
+      // a non-associated increment), and a part carried below it moves the bracket's lower end
+      // by no more than the part: after a few, the bracket stands wider than the tolerance.
+      if (proven && ++undecided >= kUndecidedInBracket)
+        break;
     }
   }
   if (proven) {

@@ -4,7 +4,7 @@ namespace bimrock {
 
 YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
                                   const std::vector<PlasticState>& states, const Eigen::VectorXd& u,
-                                  const std::vector<int>& candidates) {
+                                  const std::vector<int>& candidates, FlowRule flow) {
   YieldSystem sys;
   std::vector<Eigen::Triplet<double, std::int64_t>> phi;
   std::vector<Eigen::Triplet<double, std::int64_t>> c;
@@ -15,7 +15,9 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
     const LocalOperator op = local_operator(model, point);
     const Eigen::MatrixXd d = local_stiffness(model, point);
     const Eigen::VectorXd stress = local_stress(model, point, states[p], u);
-    const LocalYield y = linearize(model, point, states[p], stress);
+    LocalYield y = linearize(model, point, states[p], stress);
+    if (flow == FlowRule::associated)
+      y.g = y.a;
     const double w = point.weight;
     const Eigen::MatrixXd a_d_e = w * y.a * d * op.e;  // scaled C rows, local columns
     const Eigen::MatrixXd e_d_g = w * op.e.transpose() * d * y.g.transpose();  // Phi columns
@@ -52,6 +54,12 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
   sys.n.setFromTriplets(n.begin(), n.end());
   sys.f0 = Eigen::Map<const Eigen::VectorXd>(f0.data(), m);
   return sys;
+}
+
+bool follows_associated_flow(const YieldSystem& sys) {
+  const SparseMatrix asymmetry = sys.c - SparseMatrix(sys.phi.transpose());
+  const SparseMatrix n_asymmetry = sys.n - SparseMatrix(sys.n.transpose());
+  return asymmetry.norm() <= 1e-12 * sys.c.norm() && n_asymmetry.norm() <= 1e-12 * sys.n.norm();
 }
 
 }  // namespace bimrock

@@ -29,10 +29,20 @@ struct YieldSystem {
   [[nodiscard]] int size() const { return static_cast<int>(rows.size()); }
 };
 
+/// The flow rule the rows' Phi and N follow: the model's (its dilation angles), or the
+/// associated one (flow along each yield function's gradient), whose collapse loads bound those
+/// of every other flow rule from above (analysis/associated_bound.hpp).
+enum class FlowRule { as_modelled, associated };
+
 /// Builds the yield rows of every mode of the given yield points at their current state.
 /// @param candidates indices into `points`
 YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
                                   const std::vector<PlasticState>& states, const Eigen::VectorXd& u,
-                                  const std::vector<int>& candidates);
+                                  const std::vector<int>& candidates,
+                                  FlowRule flow = FlowRule::as_modelled);
+
+/// Whether the rows follow associated flow, C = Phi^T and N symmetric (to round-off): the LCP
+/// matrix N - C K^-1 Phi is then symmetric.
+[[nodiscard]] bool follows_associated_flow(const YieldSystem& sys);
 
 }  // namespace bimrock

@@ -48,12 +48,8 @@ class LcpOnZone final : public LcpColumns {
   // Associated flow (C = Phi^T, N symmetric) under load control: M is symmetric (the control
   // term is not). Checked on first use only.
   [[nodiscard]] bool symmetric() const override {
-    if (!symmetric_) {
-      const SparseMatrix asymmetry = sys_.c - SparseMatrix(sys_.phi.transpose());
-      const SparseMatrix n_asymmetry = sys_.n - SparseMatrix(sys_.n.transpose());
-      symmetric_ = !control_ && asymmetry.norm() <= 1e-12 * sys_.c.norm() &&
-                   n_asymmetry.norm() <= 1e-12 * sys_.n.norm();
-    }
+    if (!symmetric_)
+      symmetric_ = !control_ && follows_associated_flow(sys_);
     return *symmetric_;
   }
   [[nodiscard]] const Eigen::VectorXd& q() const override { return q_; }

@@ -1,0 +1,55 @@
+#include <bimrock/analysis/associated_bound.hpp>
+
+#include <bimrock/solve/lcp.hpp>
+
+namespace bimrock {
+
+std::optional<AssociatedBound> associated_bound(const StageContext& ctx, const AnalysisState& s,
+                                                const std::vector<int>& candidates,
+                                                const YieldSystem& sys, const IncrementLcp& lcp,
+                                                IncrementSolver& solver) {
+  if (lcp.control || sys.size() == 0 || follows_associated_flow(sys))
+    return std::nullopt;
+  // The same increment with associated flow: f0 and C, and so q, do not depend on the flow.
+  const YieldSystem associated =
+      assemble_yield_system(ctx.model, ctx.points, s.points, s.u, candidates, FlowRule::associated);
+  const IncrementLcp alcp{associated,  lcp.points, lcp.q, lcp.load_part,
+                          lcp.gap_old, nullptr,    {},    lcp.warm};
+  const IncrementSolution a = solver.solve(alcp, nullptr, false);
+  AssociatedBound bound;
+  bound.active_set_iterations = a.active_set_iterations;
+  bound.tangent_factorizations = a.tangent_factorizations;
+  bound.pivots = a.pivots;
+  // The candidate: associated flow's certificate, or its solution's flow where round-off
+  // resolved the mechanism as a very soft mode (multipliers orders of magnitude above the
+  // step's, as increment.cpp says). Any r >= 0 that passes the check below is a proof.
+  using Outcome = IncrementSolution::Outcome;
+  Eigen::VectorXd r;
+  if (a.outcome == Outcome::no_solution && a.ray.size() == sys.size())
+    r = a.ray;
+  else if (a.outcome == Outcome::solved && a.z.size() == sys.size())
+    r = (a.z - lcp.gap_old).cwiseMax(0.0);
+  if (r.size() == 0 || !(r.maxCoeff() > 0.0))
+    return std::nullopt;
+  r /= r.maxCoeff();
+  // The certificate on the non-associated LCP: M^T r = N^T r - Phi^T K^-1 C^T r <= 0 and
+  // q . r < 0, with q as the LCP holds it (shifted by M gap_old: an opening row's unknown is the
+  // total gap).
+  const Eigen::VectorXd x = ctx.k.solve(Eigen::VectorXd(sys.c.transpose() * r));
+  const Eigen::VectorXd mtr = sys.n.transpose() * r - sys.phi.transpose() * x;
+  const Eigen::VectorXd sizes = SparseMatrix(sys.n.cwiseAbs().transpose()) * r +
+                                SparseMatrix(sys.phi.cwiseAbs().transpose()) * x.cwiseAbs();
+  Eigen::VectorXd q = lcp.q;
+  if (lcp.gap_old.size() == q.size() && lcp.gap_old.cwiseAbs().maxCoeff() > 0.0)
+    q -= sys.n * lcp.gap_old - sys.c * ctx.k.solve(Eigen::VectorXd(sys.phi * lcp.gap_old));
+  const double m_max = sys.n.diagonal().cwiseAbs().maxCoeff();  // M_ii <= N_ii
+  if (!certifies_infeasibility(q, r, mtr, sizes, m_max))
+    return std::nullopt;
+  bound.ray = r;
+  bound.du = ctx.k.solve(Eigen::VectorXd(associated.phi * r));
+  bound.proven_fraction =
+      lcp.load_part.size() == q.size() ? certified_from(q, lcp.load_part, r) : 1.0;
+  return bound;
+}
+
+}  // namespace bimrock

@@ -1,0 +1,45 @@
+#pragma once
+/// @file Radenkovic's first theorem as the proof that a non-associated increment fails: no flow
+/// rule carries a load that associated flow cannot, since any solution's stresses are in
+/// equilibrium with the load and within every yield function, whatever the flow that led there.
+///
+/// Where the LCP of a load-controlled increment with non-associated flow is left undecided (too
+/// large for the complete method, and past a limit load, where the active-set method and Lemke
+/// prove nothing), the same increment is solved with associated flow: the same yield rows and q,
+/// Phi and N from the yield functions' gradients. Its LCP is symmetric, and its certificate r
+/// (r >= 0, M_a r = 0, q . r < 0) is a mechanism whose plastic strains are compatible, so that
+/// r^T (N - C K^-1 Phi) = 0 for every flow rule Phi of perfect plasticity: the certificate is
+/// checked on the non-associated LCP itself before it is used. It proves every load above the
+/// associated limit load, not those between the two limit loads.
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include <bimrock/analysis/analysis_state.hpp>
+#include <bimrock/analysis/increment.hpp>
+#include <bimrock/assembly/yield_system.hpp>
+#include <bimrock/solve/increment_lcp.hpp>
+#include <bimrock/solve/increment_solver.hpp>
+
+namespace bimrock {
+
+struct AssociatedBound {
+  Eigen::VectorXd ray;           ///< the associated mechanism's multipliers (>= 0, max 1)
+  Eigen::VectorXd du;            ///< its displacements, K^-1 Phi_associated ray
+  double proven_fraction = 1.0;  ///< the least fraction of the step proven to fail
+  int active_set_iterations = 0;
+  int tangent_factorizations = 0;
+  int pivots = 0;
+};
+
+/// The proof that the increment `lcp` (rows `sys`, of the yield points `candidates` at state s)
+/// has no solution, from the associated flow rule; none where its rows follow associated flow
+/// already, under displacement control, or where the associated increment has a solution or
+/// its certificate does not hold on `lcp`.
+std::optional<AssociatedBound> associated_bound(const StageContext& ctx, const AnalysisState& s,
+                                                const std::vector<int>& candidates,
+                                                const YieldSystem& sys, const IncrementLcp& lcp,
+                                                IncrementSolver& solver);
+
+}  // namespace bimrock
