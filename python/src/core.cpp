@@ -434,6 +434,7 @@ py::object collapse_of(const Result& r) {
   out["carried_factor"] = c.carried;
   out["failed_factor"] = c.failed;
   out["unstable_at_first_load"] = c.unstable_at_first_load;
+  out["undecided_inside"] = c.undecided_inside;
   out["mechanism"] = mechanism_of(*r.model, c);
   return py::object(std::move(out));
 }

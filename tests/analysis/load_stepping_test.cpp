@@ -80,6 +80,7 @@ TEST(LoadStepping, BracketsTheCollapseToTheTolerance) {
   for (std::size_t i = 1; i < s.carried.size(); ++i)
     EXPECT_GT(s.carried[i], s.carried[i - 1]);
   EXPECT_FALSE(out.unstable_at_first_load);
+  EXPECT_FALSE(out.undecided_inside);
 }
 
 TEST(LoadStepping, AimsAtACertificatesBoundAndNeedsFewerTrialsThanHalving) {
@@ -180,6 +181,7 @@ TEST(LoadStepping, UndecidedTrialsBelowAProofLeaveTheBracketAsProvenAfterAFew) {
       ++undecided;
   }
   EXPECT_EQ(undecided, 3u);  // then the bracket stands: each costs a whole search
+  EXPECT_TRUE(out.undecided_inside);
 }
 
 }  // namespace

@@ -25,6 +25,10 @@ struct Collapse {
   /// fraction of its first load no larger than the bracket tolerance (e.g. a cohesionless arch
   /// thinner than its least thickness under its own weight). `failed` is that fraction.
   bool unstable_at_first_load = false;
+  /// The loads inside [carried, failed] could not be decided (neither carried nor proven to
+  /// fail; analysis/load_stepping.hpp): the bracket is wider than the tolerance. Non-associated
+  /// flow proven by associated flow's certificate ends so, between its two limit loads.
+  bool undecided_inside = false;
 };
 
 }  // namespace bimrock

@@ -92,8 +92,10 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
       // search (the complete method, Lemke on the whole LCP, or the associated flow's proof of
       // a non-associated increment), and a part carried below it moves the bracket's lower end
       // by no more than the part: after a few, the bracket stands wider than the tolerance.
-      if (proven && ++undecided >= kUndecidedInBracket)
+      if (proven && ++undecided >= kUndecidedInBracket) {
+        out.undecided_inside = true;
         break;
+      }
     }
   }
   if (proven) {

@@ -33,6 +33,8 @@ struct SteppedIncrement {
   double failed = 0.0;                  ///< collapse: the nearest stage factor proven to fail
   std::optional<Trial> failure;         ///< collapse: the trial that proved it
   bool unstable_at_first_load = false;  ///< collapse proven within the tolerance of zero load
+  /// collapse: the bisection ended on undecided trials, the bracket wider than the tolerance
+  bool undecided_inside = false;
 };
 
 /// Tries a step from the state carried so far.

@@ -255,6 +255,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
             describe_collapse(st, done.carried, done.failed,
                               done.failure ? &*done.failure : nullptr, last ? &*last : nullptr);
         result.collapse->unstable_at_first_load = done.unstable_at_first_load;
+        result.collapse->undecided_inside = done.undecided_inside;
         return;
       }
     }

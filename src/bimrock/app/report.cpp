@@ -116,6 +116,12 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
                  c.failed * load.norm());
     fmt::print("; {} yield modes in the mechanism (summary.json, collapse.png)\n",
                c.mechanism.size());
+    if (c.undecided_inside)
+      fmt::print(
+          "  the bracket is wider than its tolerance: the loads inside it could be neither carried "
+          "nor proven to fail (with non-associated flow, the upper end can be the associated "
+          "limit load); a displacement-controlled stage (stages[].control) follows the path "
+          "past its peak\n");
   } else if (result.stopped) {
     const Stop& st = *result.stopped;
     fmt::print("STOPPED in stage '{}' at factor {:.6f}: {}; the carried increments are written\n",

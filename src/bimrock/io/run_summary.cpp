@@ -195,6 +195,7 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                        {"carried_point_load_N", c.carried * load},
                        {"failed_point_load_N", c.failed * load},
                        {"unstable_at_first_load", c.unstable_at_first_load},
+                       {"undecided_inside", c.undecided_inside},
                        {"mechanism", mechanism_json(model, plastic->points, c, joints)},
                        {"mechanism_joints", mechanism_joints_json(plastic->points, joints)}};
       if (c.direction.size() == model.n_dofs())
