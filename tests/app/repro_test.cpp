@@ -197,23 +197,33 @@ TEST(Repro, HugeSpacingWithTracesGivesTheBlocksOfOneJoint) {
   }
 }
 
-// A face of a rock slope's cut blocks on which CGAL's optimal convex partition returns a piece
-// with reflex corners (geometry/convex_partition.cpp): the blocks are convex (within the model's
-// length tolerance, as for every block) and tile the outline
-// less the tunnel, 5250 - 28.3646722 = 5221.6353278 m^2 (shoelace of the case's polygons). In
-// the Debug builds (ASan+UBSan) CGAL checks its partition and threw here; in Release nothing did.
-TEST(Repro, EveryCutBlockIsConvexWhereCgalsOptimalPartitionIsNot) {
-  const fs::path p =
-      fs::path(BIMROCK_SOURCE_DIR) / "tests/app/data/repro/partition_not_convex.yaml";
-  const Model model = build_model(read_case_file(p.string()).spec);
+// The blocks of a case in tests/app/data/repro/, each checked convex (within the model's length
+// tolerance, as for every block): how many, and their areas added up.
+struct Tiling {
+  int blocks = 0;
   double area = 0.0;
+};
+
+Tiling convex_blocks(const char* file) {
+  const fs::path p = fs::path(BIMROCK_SOURCE_DIR) / "tests/app/data/repro" / file;
+  const Model model = build_model(read_case_file(p.string()).spec);
+  Tiling t{model.n_blocks(), 0.0};
   for (const Block& b : model.blocks) {
     EXPECT_EQ(check_convex_polygon(b.polygon, model.tolerance).defect, PolygonDefect::none)
         << b.source.item;
-    area += b.area;
+    t.area += b.area;
   }
-  EXPECT_GT(model.n_blocks(), 100);
-  EXPECT_NEAR(area, 5221.6353278, 1e-6);
+  return t;
+}
+
+// A face of a rock slope's cut blocks on which CGAL's optimal convex partition returns a piece
+// with reflex corners (geometry/convex_partition.cpp): the blocks are convex and tile the outline
+// less the tunnel, 5250 - 28.3646722 = 5221.6353278 m^2 (shoelace of the case's polygons). In
+// the Debug builds (ASan+UBSan) CGAL checks its partition and threw here; in Release nothing did.
+TEST(Repro, EveryCutBlockIsConvexWhereCgalsOptimalPartitionIsNot) {
+  const Tiling t = convex_blocks("partition_not_convex.yaml");
+  EXPECT_NEAR(t.area, 5221.6353278, 1e-6);
+  EXPECT_GT(t.blocks, 100);
 }
 
 // Joints that nearly meet leave cut blocks with exact corners closer than the length tolerance,
@@ -222,17 +232,9 @@ TEST(Repro, EveryCutBlockIsConvexWhereCgalsOptimalPartitionIsNot) {
 // 5250 - 27.5529222 = 5222.4470778 m^2 (shoelace of the case's polygons). Before, a valid case
 // was rejected with "domain block 352: vertex 2 duplicates an earlier vertex".
 TEST(Repro, CornersCloserThanTheToleranceAreMergedAndZeroAreaBlocksLeftOut) {
-  const fs::path p =
-      fs::path(BIMROCK_SOURCE_DIR) / "tests/app/data/repro/corners_closer_than_tolerance.yaml";
-  const Model model = build_model(read_case_file(p.string()).spec);
-  double area = 0.0;
-  for (const Block& b : model.blocks) {
-    EXPECT_EQ(check_convex_polygon(b.polygon, model.tolerance).defect, PolygonDefect::none)
-        << b.source.item;
-    area += b.area;
-  }
-  EXPECT_GT(model.n_blocks(), 1000);
-  EXPECT_NEAR(area, 5222.4470778, 1e-6);
+  const Tiling t = convex_blocks("corners_closer_than_tolerance.yaml");
+  EXPECT_NEAR(t.area, 5222.4470778, 1e-6);
+  EXPECT_GT(t.blocks, 1000);
 }
 
 // ---- The output folder of `run`, checked before solving ----------------------------------------
