@@ -187,8 +187,9 @@ class Result:
     def collapse(self):
         """None, or the stage that could not be carried: stage, stage_name, carried_factor and
         failed_factor (the bracket of the collapse load factor), unstable_at_first_load,
-        undecided_inside (the bracket is wider than its tolerance), and mechanism: yield_point, mode, multiplier (arrays), block_velocities (n, 6), block_speeds,
-        block_states ('moves', 'rotates', 'stands')."""
+        undecided_inside (the bracket is wider than its tolerance), and mechanism: yield_point,
+        mode, multiplier (arrays), block_velocities (n, 6), block_speeds, block_states ('moves',
+        'rotates', 'stands')."""
         return self._core.collapse
 
     @property

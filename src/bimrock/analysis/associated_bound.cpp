@@ -4,22 +4,19 @@
 
 namespace bimrock {
 
-std::optional<AssociatedBound> associated_bound(const StageContext& ctx, const AnalysisState& s,
-                                                const std::vector<int>& candidates,
-                                                const YieldSystem& sys, const IncrementLcp& lcp,
-                                                IncrementSolver& solver) {
+AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s,
+                                 const std::vector<int>& candidates, const YieldSystem& sys,
+                                 const IncrementLcp& lcp, IncrementSolver& solver) {
+  AssociatedBound bound;
   if (lcp.control || sys.size() == 0 || follows_associated_flow(sys))
-    return std::nullopt;
+    return bound;
   // The same increment with associated flow: f0 and C, and so q, do not depend on the flow.
   const YieldSystem associated =
       assemble_yield_system(ctx.model, ctx.points, s.points, s.u, candidates, FlowRule::associated);
   const IncrementLcp alcp{associated,  lcp.points, lcp.q, lcp.load_part,
                           lcp.gap_old, nullptr,    {},    lcp.warm};
-  const IncrementSolution a = solver.solve(alcp, nullptr, false);
-  AssociatedBound bound;
-  bound.active_set_iterations = a.active_set_iterations;
-  bound.tangent_factorizations = a.tangent_factorizations;
-  bound.pivots = a.pivots;
+  bound.associated = solver.solve(alcp, nullptr, false);
+  const IncrementSolution& a = bound.associated;
   // The candidate: associated flow's certificate, or its solution's flow where round-off
   // resolved the mechanism as a very soft mode (multipliers orders of magnitude above the
   // step's, as increment.cpp says). Any r >= 0 that passes the check below is a proof.
@@ -30,7 +27,7 @@ std::optional<AssociatedBound> associated_bound(const StageContext& ctx, const A
   else if (a.outcome == Outcome::solved && a.z.size() == sys.size())
     r = (a.z - lcp.gap_old).cwiseMax(0.0);
   if (r.size() == 0 || !(r.maxCoeff() > 0.0))
-    return std::nullopt;
+    return bound;
   r /= r.maxCoeff();
   // The certificate on the non-associated LCP: M^T r = N^T r - Phi^T K^-1 C^T r <= 0 and
   // q . r < 0, with q as the LCP holds it (shifted by M gap_old: an opening row's unknown is the
@@ -44,7 +41,7 @@ std::optional<AssociatedBound> associated_bound(const StageContext& ctx, const A
     q -= sys.n * lcp.gap_old - sys.c * ctx.k.solve(Eigen::VectorXd(sys.phi * lcp.gap_old));
   const double m_max = sys.n.diagonal().cwiseAbs().maxCoeff();  // M_ii <= N_ii
   if (!certifies_infeasibility(q, r, mtr, sizes, m_max))
-    return std::nullopt;
+    return bound;
   bound.ray = r;
   bound.du = ctx.k.solve(Eigen::VectorXd(associated.phi * r));
   bound.proven_fraction =

@@ -11,7 +11,6 @@
 /// r^T (N - C K^-1 Phi) = 0 for every flow rule Phi of perfect plasticity: the certificate is
 /// checked on the non-associated LCP itself before it is used. It proves every load above the
 /// associated limit load, not those between the two limit loads.
-#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -25,21 +24,19 @@
 namespace bimrock {
 
 struct AssociatedBound {
-  Eigen::VectorXd ray;           ///< the associated mechanism's multipliers (>= 0, max 1)
-  Eigen::VectorXd du;            ///< its displacements, K^-1 Phi_associated ray
-  double proven_fraction = 1.0;  ///< the least fraction of the step proven to fail
-  int active_set_iterations = 0;
-  int tangent_factorizations = 0;
-  int pivots = 0;
+  IncrementSolution associated;  ///< the associated increment's solve (its work is the trial's)
+  Eigen::VectorXd ray;           ///< proven: the associated mechanism's multipliers (>= 0, max 1)
+  Eigen::VectorXd du;            ///< proven: its displacements, K^-1 Phi_associated ray
+  double proven_fraction = 1.0;  ///< proven: the least fraction of the step proven to fail
+  [[nodiscard]] bool proven() const { return ray.size() > 0; }
 };
 
 /// The proof that the increment `lcp` (rows `sys`, of the yield points `candidates` at state s)
-/// has no solution, from the associated flow rule; none where its rows follow associated flow
-/// already, under displacement control, or where the associated increment has a solution or
-/// its certificate does not hold on `lcp`.
-std::optional<AssociatedBound> associated_bound(const StageContext& ctx, const AnalysisState& s,
-                                                const std::vector<int>& candidates,
-                                                const YieldSystem& sys, const IncrementLcp& lcp,
-                                                IncrementSolver& solver);
+/// has no solution, from the associated flow rule. Not proven where its rows follow associated
+/// flow already (nothing is solved then), under displacement control, or where the associated
+/// increment has a solution or its certificate does not hold on `lcp`.
+AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s,
+                                 const std::vector<int>& candidates, const YieldSystem& sys,
+                                 const IncrementLcp& lcp, IncrementSolver& solver);
 
 }  // namespace bimrock

@@ -276,16 +276,15 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       }
       if (solution.outcome == Outcome::undecided) {
         // Non-associated flow: no flow rule carries what associated flow cannot.
-        const std::optional<AssociatedBound> bound =
+        AssociatedBound bound =
             associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver);
-        clock.lap("increments: LCP");
-        if (bound) {
-          t.active_set_iterations += bound->active_set_iterations;
-          t.tangent_factorizations += bound->tangent_factorizations;
-          t.pivots += bound->pivots;
-          t.proven_fraction = bound->proven_fraction;
-          t.du = bound->du;
-          return collapse(sys, bound->ray, ctx, std::move(t));
+        tally(bound.associated, t);
+        clock.lap("increments: LCP", "increments: K^-1 Phi columns",
+                  bound.associated.columns_seconds);
+        if (bound.proven()) {
+          t.proven_fraction = bound.proven_fraction;
+          t.du = std::move(bound.du);
+          return collapse(sys, bound.ray, ctx, std::move(t));
         }
         return t;  // failed: the caller cuts the step
       }
