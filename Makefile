@@ -12,7 +12,7 @@ DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
 # matplotlib draws the Python example's plot, scipy is the neighbour one test runs it beside;
 # nbconvert and the Python kernel execute the example notebook.
 # clang and its compiler runtime (libFuzzer, ASan, UBSan: libclang-rt-14-dev, which clang only
-# recommends) build the fuzz targets (docs/fuzzing.md).
+# recommends) build the sanitizer build and its fuzz targets (docs/fuzzing.md).
 # Optional peers the benchmarks compare with, installed by `make bench` only (bench/CMakeLists.txt
 # builds without them): Siconos Numerics' LCP solvers.
 BENCH_PACKAGES := libsiconos-numerics-dev
@@ -51,15 +51,15 @@ build-asan: deps
 	cmake --preset asan-ubsan
 	cmake --build --preset asan-ubsan -j $(JOBS)
 
-# The fuzz targets only (not the solver's layers): the fuzz preset's build lists them.
+# The sanitizer build (clang: ASan, UBSan) holds the tests and the fuzz targets, whose short
+# runs are tests of its own. The fuzz preset builds the fuzz targets alone, for long runs.
 build-fuzz: deps
 	cmake --preset fuzz
 	cmake --build --preset fuzz -j $(JOBS)
 
-test: build build-asan build-fuzz
+test: build build-asan
 	ctest --preset release
 	ctest --preset asan-ubsan
-	ctest --preset fuzz
 
 # Each fuzz target for FUZZ_RUNS executions (docs/fuzzing.md), one after the other, at the
 # lowest priority; a finding stops it with the input in build/fuzz/fuzz/<target>/findings/. An

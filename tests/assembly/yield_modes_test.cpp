@@ -102,7 +102,8 @@ TEST(JointYield, GradientsAndFlowsAreTheDerivativesOfTheYieldFunctionsAndPotenti
     law.dilation = trial % 4 == 0 ? tan_phi : 0.3 * unit(rng);
     const Model m = one_of_each(law, BlockStrength{});
     const PlasticState s;
-    const Eigen::Vector2d r(-2e6 * unit(rng) + 1e5, 1e6 * (unit(rng) - 0.5));
+    const double shear = 1e6 * (unit(rng) - 0.5);  // drawn first: draws in a fixed order
+    const Eigen::Vector2d r(-2e6 * unit(rng) + 1e5, shear);
     const LocalYield y = linearize(m, joint_point(), s, r);
     ASSERT_EQ(y.a.rows(), 3);
     ASSERT_EQ(y.a.cols(), 2);
@@ -225,8 +226,10 @@ TEST(BlockYield, FlowsAreTheGradientsOfTheDilatantPotential) {
     law.dilation = trial % 3 == 0 ? law.friction : std::sin(phi * unit(rng));
     law.planes = 5 + trial;
     const Model m = one_of_each(JointStrength{}, law);
-    const Eigen::Vector3d sigma(1e6 * (unit(rng) - 0.7), 1e6 * (unit(rng) - 0.7),
-                                1e6 * (unit(rng) - 0.5));
+    Eigen::Vector3d sigma;
+    sigma(2) = 1e6 * (unit(rng) - 0.5);  // draws in a fixed order: z, y, x
+    sigma(1) = 1e6 * (unit(rng) - 0.7);
+    sigma(0) = 1e6 * (unit(rng) - 0.7);
     const LocalYield y = linearize(m, block_point(), PlasticState{}, sigma);
     const double h = 1e2;
     for (int k = 0; k < law.planes; ++k) {

@@ -42,7 +42,8 @@ inline std::vector<Polygon> irregular_blocks(double w, double h, int n_cuts, uns
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Polygon> blocks{{{{0, 0}, {w, 0}, {w, h}, {0, h}}}};
   for (int c = 0; c < n_cuts; ++c) {
-    const Vec2 p(w * (0.2 + 0.6 * unit(rng)), h * (0.2 + 0.6 * unit(rng)));
+    const double y = h * (0.2 + 0.6 * unit(rng));  // y first: draws in a fixed order
+    const Vec2 p(w * (0.2 + 0.6 * unit(rng)), y);
     const double angle = M_PI * unit(rng);
     const Vec2 n(std::cos(angle), std::sin(angle));
     const bool partial = c % 3 == 2;

@@ -19,7 +19,8 @@ inline Polygon random_convex_polygon(std::mt19937& rng, int n) {
   const double a = 0.3 + 1.7 * unit(rng);
   const double b = 0.3 + 1.7 * unit(rng);
   const double turn = 2.0 * M_PI * unit(rng);
-  const Vec2 centre(4.0 * unit(rng) - 2.0, 4.0 * unit(rng) - 2.0);
+  const double centre_y = 4.0 * unit(rng) - 2.0;  // y first: draws in a fixed order
+  const Vec2 centre(4.0 * unit(rng) - 2.0, centre_y);
   const double spacing = 2.0 * M_PI / n;
   const double start = 2.0 * M_PI * unit(rng);
   Polygon p;

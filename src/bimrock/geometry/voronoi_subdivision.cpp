@@ -86,7 +86,11 @@ std::vector<Vec2> seed_points(const Polygon& block, const VoronoiOptions& o, See
   }
   const auto n = static_cast<std::size_t>(std::max(1.0, std::round(signed_area(block) / (h * h))));
   for (std::size_t attempt = 0; seeds.size() < n && attempt < 100 * n; ++attempt) {
-    const Vec2 p(rng.uniform(box.lo.x(), box.hi.x()), rng.uniform(box.lo.y(), box.hi.y()));
+    // y before x, in statements of their own: a seed's blocks depend on the order of the draws,
+    // which the order of evaluating a call's arguments would leave to the compiler.
+    const double y = rng.uniform(box.lo.y(), box.hi.y());
+    const double x = rng.uniform(box.lo.x(), box.hi.x());
+    const Vec2 p(x, y);
     if (contains(block, p, inset))
       seeds.push_back(p);
   }
