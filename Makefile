@@ -13,6 +13,10 @@ DEBIAN_PACKAGES := cmake make g++ pkg-config git clang-format \
 # nbconvert and the Python kernel execute the example notebook.
 # clang and its compiler runtime (libFuzzer, ASan, UBSan: libclang-rt-14-dev, which clang only
 # recommends) build the sanitizer build and its fuzz targets (docs/fuzzing.md).
+# The PETSc backend (docs/parallel.md): PETSc with Open MPI, hypre and MUMPS. `make test`
+# installs it and tests the backend on one and two processes; `make build` and `make demo` do not
+# need it, and build the backend when it is installed.
+PETSC_PACKAGES := libpetsc-real-dev
 # Optional peers the benchmarks compare with, installed by `make bench` only (bench/CMakeLists.txt
 # builds without them): Siconos Numerics' LCP solvers.
 BENCH_PACKAGES := libsiconos-numerics-dev
@@ -21,7 +25,7 @@ JOBS ?= $(shell nproc)
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 DEMO_OUT ?= results/jointed_rock_mass
 
-.PHONY: all deps bench-deps build build-asan build-fuzz test fuzz-long demo bench format clean
+.PHONY: all deps petsc-deps bench-deps build build-asan build-fuzz test fuzz-long demo bench format clean
 
 all: build
 
@@ -40,6 +44,9 @@ endef
 deps:
 	$(call install_missing,$(DEBIAN_PACKAGES))
 
+petsc-deps: deps
+	$(call install_missing,$(PETSC_PACKAGES))
+
 bench-deps: deps
 	$(call install_missing,$(BENCH_PACKAGES))
 
@@ -57,7 +64,8 @@ build-fuzz: deps
 	cmake --preset fuzz
 	cmake --build --preset fuzz -j $(JOBS)
 
-test: build build-asan
+# petsc-deps first: the release build finds PETSc when it is configured.
+test: petsc-deps build build-asan
 	ctest --preset release
 	ctest --preset asan-ubsan
 

@@ -57,7 +57,8 @@ TEST(CommandLine, QuietGoesBeforeOrAfterTheSubcommand) {
 
 TEST(CommandLine, ACommandLineThatCannotBeReadIsBadInput) {
   for (const std::string args :
-       {"run case.yaml --no-such-option", "run", "frobnicate", "bench --models nothing"}) {
+       {"run case.yaml --no-such-option", "run", "frobnicate", "bench --models nothing",
+        "run case.yaml --solver nothing"}) {
     const testing::CommandResult r = run_command(args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
@@ -96,6 +97,17 @@ TEST(CommandLine, DefaultOutputFoldersOfCasesNamedAlikeDoNotCollide) {
   EXPECT_TRUE(std::filesystem::exists(r.folder / "results" / "a" / "case" / "summary.json"));
   EXPECT_TRUE(std::filesystem::exists(r.folder / "results" / "b" / "case" / "summary.json"));
   EXPECT_TRUE(std::filesystem::exists(r.folder / "results" / "case" / "summary.json"));
+  std::filesystem::remove_all(r.folder);
+}
+
+// The PETSc backend solves elastic cases only (docs/parallel.md): a case with stages is refused
+// before any work, as bad input; a command built without PETSc refuses --solver petsc alike.
+TEST(CommandLine, ThePetscSolverRefusesANonlinearCaseBeforeSolving) {
+  const std::string staged = std::string(BIMROCK_SOURCE_DIR) + "/examples/pull_out/case.yaml";
+  const testing::CommandResult r = run_command("run '" + staged + "' --solver petsc -o results");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--solver petsc"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(r.folder / "results"));
   std::filesystem::remove_all(r.folder);
 }
 

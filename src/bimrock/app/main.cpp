@@ -19,6 +19,11 @@
 #include <bimrock/io/results_writer.hpp>
 #include <bimrock/solve/factor_memory.hpp>
 
+#ifdef BIMROCK_WITH_PETSC
+#include <bimrock/petsc/elastic_solve.hpp>
+#include <bimrock/petsc/session.hpp>
+#endif
+
 #include "bimrock/app/bench_command.hpp"
 #include "bimrock/app/mesh_command.hpp"
 #include "bimrock/app/openmp_environment.hpp"
@@ -52,7 +57,36 @@ std::filesystem::path default_output(const std::string& case_file) {
   return std::filesystem::path("results") / (named ? folder / path.stem() : path.stem());
 }
 
-int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
+// `run --solver petsc` (docs/parallel.md): an elastic case solved with PETSc, by every process
+// of an MPI run (mpirun -n N bimrock run ...); the first writes the results and prints.
+int run_with_petsc([[maybe_unused]] const std::string& case_file, const bimrock::Case& c,
+                   const bimrock::Model& model, const std::filesystem::path& out, bool quiet) {
+#ifdef BIMROCK_WITH_PETSC
+  const bimrock::PetscSession petsc;
+  bimrock::PetscSolveReport report;
+  const bimrock::ElasticSolution solution = bimrock::solve_elastic_with_petsc(model, report);
+  if (petsc.rank() != 0)
+    return kOk;
+  bimrock::write_elastic_results(model, solution, c.output, out);
+  if (!quiet) {
+    bimrock::print_summary(model, solution, out);
+    fmt::print("PETSc: {} on {} process{}, {} iterations, relative residual {:.2e}\n",
+               report.method, report.ranks, report.ranks == 1 ? "" : "es", report.iterations,
+               report.relative_residual);
+    if (!report.fallback.empty())
+      fmt::print("  ({}: K was factorized by MUMPS instead)\n", report.fallback);
+  }
+  return kOk;
+#else
+  (void)c, (void)model, (void)out, (void)quiet;
+  throw bimrock::InputError(case_file, 0, "--solver petsc",
+                            "this bimrock was built without PETSc (install libpetsc-real-dev "
+                            "and rebuild; docs/parallel.md)");
+#endif
+}
+
+int run(const std::string& case_file, std::filesystem::path out, const std::string& solver,
+        bool quiet) {
   const bimrock::Case c = bimrock::read_case_file(case_file);
   const bimrock::Model model = bimrock::build_model(c.spec);
   if (out.empty())
@@ -60,6 +94,15 @@ int run(const std::string& case_file, std::filesystem::path out, bool quiet) {
   // Both checked before solving: a run must not end, after the work, on a folder it cannot use.
   bimrock::check_output_size(model, c);
   bimrock::check_output_folder(out);
+  if (solver == "petsc") {
+    if (!model.stages.empty())
+      throw bimrock::InputError(
+          case_file, 0, "--solver petsc",
+          fmt::format("the PETSc backend solves elastic cases (no stages), and this case has "
+                      "{} stage(s): run it without --solver petsc (CHOLMOD)",
+                      model.stages.size()));
+    return run_with_petsc(case_file, c, model, out, quiet);
+  }
   if (model.stages.empty()) {
     const bimrock::ElasticSolution solution = bimrock::solve_elastic(model);
     bimrock::write_elastic_results(model, solution, c.output, out);
@@ -121,6 +164,12 @@ int main(int argc, char** argv) {
   run_cmd->add_option("case", case_file, "case file (YAML)")->required();
   run_cmd->add_option("-o,--output", output,
                       "results folder (default results/<folder of the case>/<case name>)");
+  std::string solver = "cholmod";
+  run_cmd
+      ->add_option("--solver", solver,
+                   "cholmod (default), or petsc: an elastic case with PETSc, under mpirun too "
+                   "(docs/parallel.md)")
+      ->check(CLI::IsMember({"cholmod", "petsc"}));
 
   CLI::App* check_cmd = app.add_subcommand("check", "read and check a case without solving it");
   check_cmd->add_option("case", case_file, "case file (YAML)")->required();
@@ -163,7 +212,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run_cmd)
-      return run(case_file, output, quiet);
+      return run(case_file, output, solver, quiet);
     if (*check_cmd)
       return check(case_file, quiet);
     if (*bench_cmd)
