@@ -56,9 +56,8 @@ TEST(CommandLine, QuietGoesBeforeOrAfterTheSubcommand) {
 }
 
 TEST(CommandLine, ACommandLineThatCannotBeReadIsBadInput) {
-  for (const std::string args :
-       {"run case.yaml --no-such-option", "run", "frobnicate", "bench --models nothing",
-        "run case.yaml --solver nothing"}) {
+  for (const std::string args : {"run case.yaml --no-such-option", "run", "frobnicate",
+                                 "bench --models nothing", "run case.yaml --solver nothing"}) {
     const testing::CommandResult r = run_command(args);
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
