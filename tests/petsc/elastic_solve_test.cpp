@@ -16,7 +16,7 @@
 #include <bimrock/analysis/elastic_analysis.hpp>
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/petsc/elastic_solve.hpp>
-#include <bimrock/petsc/session.hpp>
+#include <bimrock/petsc/runtime.hpp>
 #include <bimrock/reference/reference_cases.hpp>
 
 namespace bimrock {
@@ -25,11 +25,11 @@ namespace {
 // PETSc once for the whole test program, as for a command.
 class PetscEnvironment : public ::testing::Environment {
  public:
-  void SetUp() override { session_ = std::make_unique<PetscSession>(); }
-  void TearDown() override { session_.reset(); }
+  void SetUp() override { runtime_ = std::make_unique<PetscRuntime>(); }
+  void TearDown() override { runtime_.reset(); }
 
  private:
-  std::unique_ptr<PetscSession> session_;
+  std::unique_ptr<PetscRuntime> runtime_;
 };
 ::testing::Environment* const kPetsc = ::testing::AddGlobalTestEnvironment(new PetscEnvironment);
 

@@ -21,7 +21,7 @@
 
 #ifdef BIMROCK_WITH_PETSC
 #include <bimrock/petsc/elastic_solve.hpp>
-#include <bimrock/petsc/session.hpp>
+#include <bimrock/petsc/runtime.hpp>
 #endif
 
 #include "bimrock/app/bench_command.hpp"
@@ -62,7 +62,7 @@ std::filesystem::path default_output(const std::string& case_file) {
 int run_with_petsc([[maybe_unused]] const std::string& case_file, const bimrock::Case& c,
                    const bimrock::Model& model, const std::filesystem::path& out, bool quiet) {
 #ifdef BIMROCK_WITH_PETSC
-  const bimrock::PetscSession petsc;
+  const bimrock::PetscRuntime petsc;
   bimrock::PetscSolveReport report;
   const bimrock::ElasticSolution solution = bimrock::solve_elastic_with_petsc(model, report);
   if (petsc.rank() != 0)

@@ -10,7 +10,6 @@
 #include <fmt/core.h>
 #include <petscksp.h>
 
-#include <bimrock/analysis/support_check.hpp>
 #include <bimrock/model/errors.hpp>
 
 namespace bimrock {
@@ -247,17 +246,9 @@ Eigen::VectorXd petsc_solve(const SparseMatrix& lower, const Eigen::VectorXd& p,
 
 ElasticSolution solve_elastic_with_petsc(const Model& model, PetscSolveReport& report) {
   ElasticSolution s;
-  {
-    ScopedTimer t(s.timings, "check supports");
-    check_supports(model);
-  }
   SparseMatrix k;
   Eigen::VectorXd p;
-  {
-    ScopedTimer t(s.timings, "assemble");
-    k = assemble_stiffness_lower(model);
-    p = assemble_loads(model, model.loads);
-  }
+  assemble_elastic_system(model, k, p, s.timings);
   {
     ScopedTimer t(s.timings, "solve (PETSc)");
     std::vector<Vec2> centroids;

@@ -1,4 +1,4 @@
-#include <bimrock/petsc/session.hpp>
+#include <bimrock/petsc/runtime.hpp>
 
 #include <stdexcept>
 #include <string>
@@ -7,14 +7,14 @@
 
 namespace bimrock {
 
-PetscSession::PetscSession() {
+PetscRuntime::PetscRuntime() {
   if (PetscInitializeNoArguments() != 0)
     throw std::runtime_error("PETSc could not be initialized (is MPI usable here?)");
   MPI_Comm_rank(PETSC_COMM_WORLD, &rank_);
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks_);
 }
 
-PetscSession::~PetscSession() {
+PetscRuntime::~PetscRuntime() {
   PetscFinalize();
 }
 

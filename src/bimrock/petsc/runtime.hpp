@@ -5,12 +5,12 @@
 
 namespace bimrock {
 
-class PetscSession {
+class PetscRuntime {
  public:
-  PetscSession();
-  ~PetscSession();
-  PetscSession(const PetscSession&) = delete;
-  PetscSession& operator=(const PetscSession&) = delete;
+  PetscRuntime();
+  ~PetscRuntime();
+  PetscRuntime(const PetscRuntime&) = delete;
+  PetscRuntime& operator=(const PetscRuntime&) = delete;
 
   /// This process's number among the run's processes (0 writes the results).
   [[nodiscard]] int rank() const { return rank_; }
