@@ -1,8 +1,10 @@
 #include "bimrock/app/bench_command.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <thread>
 
 #include <unistd.h>
@@ -27,12 +29,26 @@ using bench::summarize;
 using bench::to_json;
 using bench::write_plots;
 
+namespace {
+
+// The threads OpenBLAS runs the factorizations' dense kernels on, as the environment limits them
+// (docs/performance.md, "Threads"): the only parallel work of a run.
+std::string blas_threads() {
+  const char* limit = std::getenv("OPENBLAS_NUM_THREADS");
+  return limit != nullptr ? std::string(limit)
+                          : fmt::format("{} (all)", std::thread::hardware_concurrency());
+}
+
+}  // namespace
+
 int run_bench(const BenchOptions& options) {
   const fs::path scratch = fs::temp_directory_path() / fmt::format("bimrock-bench-{}", ::getpid());
   fs::create_directories(scratch);
   set_memory_tracking(true);  // each phase's peak resident memory, in the timings
-  fmt::print("bimrock bench: {} hardware threads, {} repetitions, medians; SI units\n",
-             std::thread::hardware_concurrency(), options.repetitions);
+  fmt::print(
+      "bimrock bench: CHOLMOD on 1 process, {} hardware threads, BLAS threads {}, {} "
+      "repetitions, medians; SI units\n",
+      std::thread::hardware_concurrency(), blas_threads(), options.repetitions);
   std::vector<Row> rows;
   for (const std::string& model : options.models) {
     const std::vector<int>& sizes =
@@ -53,7 +69,10 @@ int run_bench(const BenchOptions& options) {
   }
   fs::remove_all(scratch);
   if (!options.json.empty()) {
-    nlohmann::json j = {{"hardware_threads", std::thread::hardware_concurrency()},
+    nlohmann::json j = {{"solver", "cholmod"},
+                        {"processes", 1},
+                        {"hardware_threads", std::thread::hardware_concurrency()},
+                        {"blas_threads", blas_threads()},
                         {"repetitions", options.repetitions},
                         {"rows", nlohmann::json::array()}};
     for (const Row& r : rows)
