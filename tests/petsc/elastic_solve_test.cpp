@@ -33,7 +33,7 @@ class PetscEnvironment : public ::testing::Environment {
 };
 ::testing::Environment* const kPetsc = ::testing::AddGlobalTestEnvironment(new PetscEnvironment);
 
-// `iterative`: whether conjugate gradients with GAMG must converge on this model (else MUMPS
+// `iterative`: whether conjugate gradients with multigrid must converge on this model (else MUMPS
 // factorizes K); `tolerance`: of the displacements against CHOLMOD's, relative to the largest.
 void expect_same_solution(const Model& model, const std::string& name, bool iterative,
                           double tolerance) {

@@ -1,9 +1,9 @@
 #pragma once
 /// @file The elastic analysis on PETSc (docs/parallel.md): K u = P solved by conjugate gradients
-/// preconditioned by smoothed-aggregation algebraic multigrid (PCGAMG), across the processes of
-/// an MPI run, instead of by K's Cholesky factor. Every process holds the model and assembles
-/// K; each hands PETSc the rows of its own range of blocks, and every process gets the whole u
-/// back, so that the results are evaluated and written as those of the serial analysis.
+/// preconditioned by smoothed-aggregation algebraic multigrid (ML, or GAMG), across the processes
+/// of an MPI run, instead of by K's Cholesky factor. Every process holds the model and assembles K;
+/// each hands PETSc the rows of its own range of blocks, and every process gets the whole u back,
+/// so that the results are evaluated and written as those of the serial analysis.
 #include <string>
 
 #include <Eigen/Core>
@@ -30,7 +30,7 @@ inline constexpr double kPetscRelativeTolerance = 1e-12;
 inline constexpr int kPetscIterations = 2000;
 
 /// u = K^-1 P with PETSc on PETSC_COMM_WORLD. `lower` is K's lower triangle, on every process;
-/// `centroids` are the blocks', for the rigid-body modes GAMG coarsens with. Where the
+/// `centroids` are the blocks', for the rigid-body modes the multigrid coarsens with. Where the
 /// iterations do not converge, K is factorized by MUMPS (Cholesky) across the processes, unless
 /// PETSC_OPTIONS sets -ksp_type or -pc_type; throws ModelError, saying what to do, when the
 /// method chosen there does not converge.
