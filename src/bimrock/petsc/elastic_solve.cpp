@@ -191,7 +191,7 @@ Eigen::VectorXd petsc_solve(const SparseMatrix& lower, const Eigen::VectorXd& p,
   check(KSPGetPC(o.ksp, &pc), "KSPGetPC");
   // Smoothed-aggregation multigrid: Trilinos' ML where PETSc has it (243 iterations on a
   // 10 000-block mass, where PETSc's own GAMG takes 609: docs/parallel.md), else GAMG. Both
-  // coarsen with the near-null space below.
+  // coarsen with the near-null space set above.
 #ifdef PETSC_HAVE_ML
   check(PCSetType(pc, PCML), "PCSetType");
 #else
