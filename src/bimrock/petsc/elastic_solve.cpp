@@ -1,6 +1,7 @@
 #include <bimrock/petsc/elastic_solve.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -90,6 +91,17 @@ LocalRows local_rows(const SparseMatrix& lower, std::int64_t first, std::int64_t
   return rows;
 }
 
+// Rigid-body mode k of a block whose centroid is r from the centre, in its unknowns
+// [u0, v0, theta, eps_x, eps_y, gamma_xy]: translations along x (k = 0) and y (1), and a unit
+// rotation about the centre (2): u = -theta y, v = theta x at the centroid.
+std::array<double, 6> rigid_body_mode(std::size_t k, const Vec2& r) {
+  if (k == 0)
+    return {1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  if (k == 1)
+    return {0.0, 1.0, 0.0, 0.0, 0.0, 0.0};
+  return {-r.y(), r.x(), 1.0, 0.0, 0.0, 0.0};
+}
+
 std::string method(KSP ksp, PC pc) {
   KSPType ksp_type = nullptr;
   PCType pc_type = nullptr;
@@ -146,28 +158,18 @@ Eigen::VectorXd petsc_solve(const SparseMatrix& lower, const Eigen::VectorXd& p,
     mean += c;
   mean /= static_cast<double>(std::max<std::int64_t>(blocks, 1));
   o.mode_vectors.resize(3, nullptr);
-  for (int k = 0; k < 3; ++k) {
-    check(VecCreateMPI(PETSC_COMM_WORLD, m, n, &o.mode_vectors[static_cast<std::size_t>(k)]),
-          "VecCreateMPI");
+  for (std::size_t k = 0; k < o.mode_vectors.size(); ++k) {
+    Vec& mode = o.mode_vectors[k];
+    check(VecCreateMPI(PETSC_COMM_WORLD, m, n, &mode), "VecCreateMPI");
     PetscScalar* v = nullptr;
-    check(VecGetArray(o.mode_vectors[static_cast<std::size_t>(k)], &v), "VecGetArray");
+    check(VecGetArray(mode, &v), "VecGetArray");
     for (std::int64_t b = first_block; b < last_block; ++b) {
-      PetscScalar* d = v + 6 * (b - first_block);
-      const Vec2 r = centroids[static_cast<std::size_t>(b)] - mean;
-      for (int a = 0; a < 6; ++a)
-        d[a] = 0.0;
-      if (k == 0)
-        d[0] = 1.0;  // u0
-      if (k == 1)
-        d[1] = 1.0;  // v0
-      if (k == 2) {  // a unit rotation: u = -theta y, v = theta x at the centroid, theta = 1
-        d[0] = -r.y();
-        d[1] = r.x();
-        d[2] = 1.0;
-      }
+      const std::array<double, 6> d =
+          rigid_body_mode(k, centroids[static_cast<std::size_t>(b)] - mean);
+      std::copy(d.begin(), d.end(), v + 6 * (b - first_block));
     }
-    check(VecRestoreArray(o.mode_vectors[static_cast<std::size_t>(k)], &v), "VecRestoreArray");
-    check(VecNormalize(o.mode_vectors[static_cast<std::size_t>(k)], nullptr), "VecNormalize");
+    check(VecRestoreArray(mode, &v), "VecRestoreArray");
+    check(VecNormalize(mode, nullptr), "VecNormalize");
   }
   check(MatNullSpaceCreate(PETSC_COMM_WORLD, PETSC_FALSE, 3, o.mode_vectors.data(), &o.modes),
         "MatNullSpaceCreate");
