@@ -13,6 +13,11 @@
 #include <nlohmann/json.hpp>
 
 #include <bimrock/analysis/memory_probe.hpp>
+#include <bimrock/model/errors.hpp>
+#ifdef BIMROCK_WITH_PETSC
+#include <bimrock/petsc/elastic_solve.hpp>
+#include <bimrock/petsc/runtime.hpp>
+#endif
 
 #include "bimrock/app/bench_run.hpp"
 #include "bimrock/app/bench_table.hpp"
@@ -20,11 +25,13 @@
 namespace bimrock {
 
 namespace fs = std::filesystem;
+using bench::ElasticSolve;
 using bench::print_row;
 using bench::Row;
 using bench::Run;
 using bench::run_elastic;
 using bench::run_plastic;
+using bench::RunSettings;
 using bench::summarize;
 using bench::to_json;
 using bench::write_plots;
@@ -39,16 +46,9 @@ std::string blas_threads() {
                           : fmt::format("{} (all)", std::thread::hardware_concurrency());
 }
 
-}  // namespace
-
-int run_bench(const BenchOptions& options) {
-  const fs::path scratch = fs::temp_directory_path() / fmt::format("bimrock-bench-{}", ::getpid());
-  fs::create_directories(scratch);
-  set_memory_tracking(true);  // each phase's peak resident memory, in the timings
-  fmt::print(
-      "bimrock bench: CHOLMOD on 1 process, {} hardware threads, BLAS threads {}, {} "
-      "repetitions, medians; SI units\n",
-      std::thread::hardware_concurrency(), blas_threads(), options.repetitions);
+// The runs of every model and size, printed as they end (by the first process only).
+std::vector<Row> run_all(const BenchOptions& options, const fs::path& scratch,
+                         const ElasticSolve& elastic, const RunSettings& settings) {
   std::vector<Row> rows;
   for (const std::string& model : options.models) {
     const std::vector<int>& sizes =
@@ -59,18 +59,23 @@ int run_bench(const BenchOptions& options) {
       const JointFlow flow =
           model == "nonassociated" ? JointFlow::no_dilation : JointFlow::associated;
       for (int rep = 0; rep < options.repetitions; ++rep)
-        runs.push_back(model == "elastic"
-                           ? run_elastic(n, scratch)
-                           : run_plastic(n, options.increments, flow, model == "fos", scratch));
+        runs.push_back(model == "elastic" ? run_elastic(n, scratch, elastic, settings)
+                                          : run_plastic(n, options.increments, flow, model == "fos",
+                                                        scratch, settings));
       rows.push_back(summarize(model, runs));
-      print_row(rows.back());
-      std::fflush(stdout);
+      if (settings.first_process) {
+        print_row(rows.back());
+        std::fflush(stdout);
+      }
     }
   }
-  fs::remove_all(scratch);
+  return rows;
+}
+
+void write_outputs(const BenchOptions& options, const std::vector<Row>& rows, int processes) {
   if (!options.json.empty()) {
-    nlohmann::json j = {{"solver", "cholmod"},
-                        {"processes", 1},
+    nlohmann::json j = {{"solver", options.solver},
+                        {"processes", processes},
                         {"hardware_threads", std::thread::hardware_concurrency()},
                         {"blas_threads", blas_threads()},
                         {"repetitions", options.repetitions},
@@ -81,6 +86,68 @@ int run_bench(const BenchOptions& options) {
   }
   if (!options.plot.empty())
     write_plots(rows, options.plot);
+}
+
+// The elastic model on the PETSc backend, on every process of an MPI run; the first prints and
+// writes (docs/parallel.md).
+int run_bench_on_petsc([[maybe_unused]] const BenchOptions& options,
+                       [[maybe_unused]] const fs::path& scratch) {
+  for (const std::string& model : options.models)
+    if (model != "elastic")
+      throw InputError("bimrock bench", 0, "--solver petsc",
+                       fmt::format("the PETSc backend solves the elastic model only, not '{}': "
+                                   "add --models elastic",
+                                   model));
+#ifdef BIMROCK_WITH_PETSC
+  const PetscRuntime petsc;
+  const bool first = petsc.rank() == 0;
+  if (first)
+    fmt::print(
+        "bimrock bench: PETSc on {} process{}, {} hardware threads, BLAS threads {}, {} "
+        "repetitions, medians; SI units\n",
+        petsc.ranks(), petsc.ranks() == 1 ? "" : "es", std::thread::hardware_concurrency(),
+        blas_threads(), options.repetitions);
+  const ElasticSolve solve = [&petsc](const Model& model, Run& run) {
+    PetscSolveReport report;
+    ElasticSolution s = solve_elastic_with_petsc(model, report);
+    run.method = report.method;
+    run.processes = report.ranks;
+    run.iterations = report.iterations;
+    run.relative_residual = report.relative_residual;
+    // Every process's peak so far (its model, K and share of PETSc's objects) added up.
+    run.all_processes_peak_bytes = petsc.sum(static_cast<double>(peak_memory_bytes()));
+    return s;
+  };
+  const std::vector<Row> rows = run_all(options, scratch, solve, {options.limit, first});
+  if (first)
+    write_outputs(options, rows, petsc.ranks());
+  return 0;
+#else
+  throw InputError("bimrock bench", 0, "--solver petsc",
+                   "this bimrock was built without PETSc (install libpetsc-real-dev and "
+                   "rebuild; docs/parallel.md)");
+#endif
+}
+
+}  // namespace
+
+int run_bench(const BenchOptions& options) {
+  const fs::path scratch = fs::temp_directory_path() / fmt::format("bimrock-bench-{}", ::getpid());
+  fs::create_directories(scratch);
+  struct Scratch {
+    fs::path path;
+    ~Scratch() { fs::remove_all(path); }
+  } const cleanup{scratch};
+  set_memory_tracking(true);  // each phase's peak resident memory, in the timings
+  if (options.solver == "petsc")
+    return run_bench_on_petsc(options, scratch);
+  fmt::print(
+      "bimrock bench: CHOLMOD on 1 process, {} hardware threads, BLAS threads {}, {} "
+      "repetitions, medians; SI units\n",
+      std::thread::hardware_concurrency(), blas_threads(), options.repetitions);
+  const ElasticSolve solve = [](const Model& model, Run&) { return solve_elastic(model); };
+  const std::vector<Row> rows = run_all(options, scratch, solve, {options.limit, true});
+  write_outputs(options, rows, 1);
   return 0;
 }
 

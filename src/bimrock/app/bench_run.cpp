@@ -92,7 +92,8 @@ std::pair<int, int> plastic_zone(const Model& model, const std::vector<YieldPoin
 
 }  // namespace
 
-Run run_elastic(int n, const fs::path& scratch) {
+Run run_elastic(int n, const fs::path& scratch, const ElasticSolve& solve,
+                const RunSettings& settings) {
   Run run;
   const CaseSpec spec = brick_mass_case(n);
   std::vector<Polygon> polygons;
@@ -107,21 +108,24 @@ Run run_elastic(int n, const fs::path& scratch) {
   start = Clock::now();
   const std::vector<SharedEdge> edges = find_shared_edges(polygons, model.tolerance);
   add(run, "(of which interface detection)", seconds_since(start));
-  const ElasticSolution s = solve_elastic(model);
+  const ElasticSolution s = solve(model, run);
   run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
   add_timings(run, s.timings);
-  start = Clock::now();
-  write_elastic_results(model, s, {}, scratch / "elastic");
-  add(run, "write results", seconds_since(start));
   run.blocks = model.n_blocks();
   run.unknowns = model.n_dofs();
   run.interfaces = model.n_interfaces();
-  measure_limit(model, run);
+  if (!settings.first_process)
+    return run;
+  start = Clock::now();
+  write_elastic_results(model, s, {}, scratch / "elastic");
+  add(run, "write results", seconds_since(start));
+  if (settings.limit)
+    measure_limit(model, run);
   return run;
 }
 
 Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
-                const fs::path& scratch) {
+                const fs::path& scratch, const RunSettings& settings) {
   Run run;
   release_free_memory();
   const double before = static_cast<double>(current_memory_bytes());
@@ -180,7 +184,8 @@ Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
   run.reserve_switches = result.reserve_switches;
   run.regions = result.regions;
   run.zone_blocks = result.zone_blocks;
-  measure_limit(model, run);
+  if (settings.limit)
+    measure_limit(model, run);
   return run;
 }
 

@@ -56,6 +56,8 @@ Row summarize(const std::string& model, const std::vector<Run>& runs) {
     row.limit_peak = std::max(row.limit_peak, r.limit_peak_bytes);
     for (const auto& [p, b] : r.peak_bytes)
       row.peak_bytes[p] = std::max(row.peak_bytes[p], b);
+    row.first.all_processes_peak_bytes =
+        std::max(row.first.all_processes_peak_bytes, r.all_processes_peak_bytes);
   }
   row.total = median(totals);
   row.limit = median(limits);
@@ -81,12 +83,22 @@ void print_row(const Row& r) {
   }
   fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "whole analysis (without writing)", r.total,
              mib(r.run_peak));
-  fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "physical limit (K + CHOLMOD alone)", r.limit,
-             mib(r.limit_peak));
+  if (r.limit > 0.0)
+    fmt::print("  {:<34} {:>10.3f} {:>10.0f}\n", "physical limit (K + CHOLMOD alone)", r.limit,
+               mib(r.limit_peak));
+  else
+    fmt::print("  {:<34} {:>10} {:>10}\n", "physical limit (K + CHOLMOD alone)", "-", "-");
   fmt::print("  (RSS peak: the process's resident set in MiB; the last two rows: its growth)\n");
+  if (!r.first.method.empty())
+    fmt::print(
+        "  PETSc: {} on {} process{}, {} iterations, relative residual {:.2e}; all processes' "
+        "resident sets {:.0f} MiB at their peaks\n",
+        r.first.method, r.first.processes, r.first.processes == 1 ? "" : "es", r.first.iterations,
+        r.first.relative_residual, mib(r.first.all_processes_peak_bytes));
   // A growth under 1 MiB (the smallest models) is the allocator's noise: no memory ratio then.
-  fmt::print("  ratio to the limit: time {:.2f}, memory {}\n", r.total / r.limit,
-             mib(r.limit_peak) >= 1.0 ? fmt::format("{:.2f}", r.run_peak / r.limit_peak) : "-");
+  if (r.limit > 0.0)
+    fmt::print("  ratio to the limit: time {:.2f}, memory {}\n", r.total / r.limit,
+               mib(r.limit_peak) >= 1.0 ? fmt::format("{:.2f}", r.run_peak / r.limit_peak) : "-");
   for (const auto& [phase, s] : r.median_seconds) {
     if (phase == "(factor of safety)")
       fmt::print("  factor of safety: {:.3f} s, {:.2f} times the rest of the analysis\n", s,
@@ -114,10 +126,15 @@ nlohmann::json to_json(const Row& r) {
           {"reserve_switches", r.first.reserve_switches},
           {"regions", r.first.regions},
           {"zone_blocks", r.first.zone_blocks},
+          {"method", r.first.method.empty() ? nlohmann::json() : nlohmann::json(r.first.method)},
+          {"processes", r.first.processes},
+          {"iterations", r.first.iterations},
+          {"relative_residual", r.first.relative_residual},
+          {"all_processes_peak_bytes", r.first.all_processes_peak_bytes},
           {"phases", phases},
           {"whole_seconds", r.total},
           {"limit_seconds", r.limit},
-          {"time_ratio", r.total / r.limit},
+          {"time_ratio", r.limit > 0.0 ? nlohmann::json(r.total / r.limit) : nlohmann::json()},
           {"whole_peak_bytes", r.run_peak},
           {"limit_peak_bytes", r.limit_peak},
           {"memory_ratio", mib(r.limit_peak) >= 1.0 ? nlohmann::json(r.run_peak / r.limit_peak)
@@ -135,17 +152,25 @@ void write_plots(const std::vector<Row>& rows, const fs::path& folder) {
     for (const Row& r : rows) {
       if (r.model != model)
         continue;
-      for (PlotSeries* s : {&t, &l, &m, &ml})
+      for (PlotSeries* s : {&t, &m})
         s->x.push_back(r.first.blocks);
       t.y.push_back(r.total);
-      l.y.push_back(r.limit);
       m.y.push_back(mib(r.run_peak));
+      if (r.limit <= 0.0)
+        continue;  // not measured (--no-limit)
+      for (PlotSeries* s : {&l, &ml})
+        s->x.push_back(r.first.blocks);
+      l.y.push_back(r.limit);
       ml.y.push_back(mib(r.limit_peak));
     }
     if (t.x.empty())
       continue;
-    time.series.insert(time.series.end(), {t, l});
-    memory.series.insert(memory.series.end(), {m, ml});
+    time.series.push_back(t);
+    memory.series.push_back(m);
+    if (!l.x.empty()) {
+      time.series.push_back(l);
+      memory.series.push_back(ml);
+    }
   }
   write_line_plot(time, folder / "bench_time");
   write_line_plot(memory, folder / "bench_memory");

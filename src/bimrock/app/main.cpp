@@ -200,6 +200,14 @@ int main(int argc, char** argv) {
   bench_cmd
       ->add_option("--increments", bench.increments, "increments of the abutment's loading stage")
       ->check(CLI::PositiveNumber);
+  bench_cmd
+      ->add_option("--solver", bench.solver,
+                   "cholmod (default), or petsc: the elastic model with PETSc, under mpirun too "
+                   "(docs/parallel.md)")
+      ->check(CLI::IsMember({"cholmod", "petsc"}));
+  bench_cmd->add_flag("!--no-limit", bench.limit,
+                      "do not measure CHOLMOD alone beside each run (a model whose factor would "
+                      "not fit in memory beside the run)");
   bench_cmd->add_option("--json", bench.json, "also write the table as JSON to this file");
   bench_cmd->add_option("--plot", bench.plot,
                         "write bench_time and bench_memory plots (PNG, SVG) to this folder");

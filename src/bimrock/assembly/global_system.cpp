@@ -7,6 +7,7 @@
 #include <bimrock/assembly/integration_points.hpp>
 #include <bimrock/assembly/kinematics.hpp>
 #include <bimrock/assembly/local_stiffness.hpp>
+#include <bimrock/assembly/stiffness_terms.hpp>
 
 namespace bimrock {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 // (each block couples with itself, with its neighbours across interfaces and with the blocks its
 // bolts' springs join, whether they stand yet or not: one pattern for every stage), so values
 // are added in place: no triplet list five times the size of K.
-class LowerAssembler {
+class LowerAssembler final : public StiffnessSink {
  public:
   LowerAssembler(const Model& model, SparseMatrix& k) : neighbours_(model.n_blocks()), k_(k) {
     for (const Interface& f : model.interfaces) {
@@ -56,9 +57,16 @@ class LowerAssembler {
     std::fill(k_.valuePtr(), k_.valuePtr() + nnz, 0.0);
   }
 
+  [[nodiscard]] bool wants(int) const override { return true; }
+  void add(const Mat6& local, int block) override { add_lower<6>(local, {block}); }
+  void add(const Mat12& local, int block_i, int block_j) override {
+    add_lower<12>(local, {block_i, block_j});
+  }
+
+ private:
   // Adds the lower triangle of the local matrix whose local block r belongs to block ids[r].
   template <int N>
-  void add(const Eigen::Matrix<double, N, N>& local, const std::array<int, N / 6>& ids) {
+  void add_lower(const Eigen::Matrix<double, N, N>& local, const std::array<int, N / 6>& ids) {
     for (int c = 0; c < N; ++c) {
       const std::int64_t gc = 6 * ids[c / 6] + c % 6;
       for (int r = 0; r < N; ++r) {
@@ -69,7 +77,6 @@ class LowerAssembler {
     }
   }
 
- private:
   // Index of entry (row, col), row >= col, in the value array.
   std::int64_t position(std::int64_t row, std::int64_t col) const {
     const std::int64_t b = col / 6;
@@ -96,34 +103,7 @@ SparseMatrix assemble_stiffness_lower(const Model& model) {
 SparseMatrix assemble_stiffness_lower(const Model& model, const Presence& present) {
   SparseMatrix lower;
   LowerAssembler k(model, lower);
-  const double t = model.settings.thickness;
-  const auto here = [&](int b) { return present.block(b); };
-  for (int b = 0; b < model.n_blocks(); ++b) {
-    const Block& block = model.blocks[b];
-    const BlockMaterial& material = model.block_materials[block.material];
-    if (!here(b)) {
-      // Any positive diagonal decouples the unknowns; t E keeps it of K's order.
-      k.add<6>(Mat6(Mat6::Identity() * t * material.young), {b});
-      continue;
-    }
-    k.add<6>(block_stiffness(block, elasticity_matrix(material, model.settings.plane), t), {b});
-  }
-  for (const Interface& f : model.interfaces) {
-    if (!here(f.block_i) || (!f.is_support() && !here(f.block_j)))
-      continue;
-    const Vec2& ci = model.blocks[f.block_i].centroid;
-    if (f.is_support()) {
-      k.add<6>(support_stiffness(f, ci, t), {f.block_i});
-    } else {
-      const Vec2& cj = model.blocks[f.block_j].centroid;
-      k.add<12>(interface_stiffness(f, ci, cj, t), {f.block_i, f.block_j});
-    }
-  }
-  for (std::size_t s = 0; s < model.bolt_springs.size(); ++s) {
-    const BoltSpring& spring = model.bolt_springs[s];
-    if (present.spring(static_cast<int>(s)))
-      k.add<12>(bolt_stiffness(model, spring), {spring.block_a, spring.block_b});
-  }
+  add_stiffness_terms(model, present, k);
   return lower;
 }
 

@@ -1,15 +1,17 @@
 #pragma once
 /// @file The elastic analysis on PETSc (docs/parallel.md): K u = P solved by conjugate gradients
 /// preconditioned by smoothed-aggregation algebraic multigrid (ML, or GAMG), across the processes
-/// of an MPI run, instead of by K's Cholesky factor. Every process holds the model and assembles K;
-/// each hands PETSc the rows of its own range of blocks, and every process gets the whole u back,
-/// so that the results are evaluated and written as those of the serial analysis.
+/// of an MPI run, instead of by K's Cholesky factor. Every process holds the model and assembles
+/// the rows of K of its own range of blocks; every process gets the whole u back, so that the
+/// results are evaluated and written as those of the serial analysis.
 #include <string>
 
 #include <Eigen/Core>
 
+#include <petscmat.h>
+
 #include <bimrock/analysis/elastic_analysis.hpp>
-#include <bimrock/assembly/global_system.hpp>
+#include <bimrock/petsc/distributed_stiffness.hpp>
 
 namespace bimrock {
 
@@ -25,17 +27,19 @@ struct PetscSolveReport {
 /// The relative tolerance of the residual the iterations stop at: the displacements of the
 /// jointed examples then agree with the direct solve's to 3e-10 (docs/parallel.md).
 inline constexpr double kPetscRelativeTolerance = 1e-12;
-/// The iterations allowed before MUMPS takes over: the jointed examples and brick masses of up
-/// to 3 000 blocks converge in 300-600 (docs/parallel.md).
-inline constexpr int kPetscIterations = 2000;
+/// The iterations allowed before MUMPS takes over: jointed masses converge in 22-36, from 105
+/// to 10^6 blocks (docs/parallel.md), and where penalty interfaces defeat the iterations they
+/// stall or diverge.
+inline constexpr int kPetscIterations = 500;
 
-/// u = K^-1 P with PETSc on PETSC_COMM_WORLD. `lower` is K's lower triangle, on every process;
-/// `centroids` are the blocks', for the rigid-body modes the multigrid coarsens with. Where the
-/// iterations do not converge, K is factorized by MUMPS (Cholesky) across the processes, unless
-/// PETSC_OPTIONS sets -ksp_type or -pc_type; throws ModelError, saying what to do, when the
-/// method chosen there does not converge.
-Eigen::VectorXd petsc_solve(const SparseMatrix& lower, const Eigen::VectorXd& p,
-                            const std::vector<Vec2>& centroids, PetscSolveReport& report);
+/// u = K^-1 P with PETSc on PETSC_COMM_WORLD. `k` holds this process's rows of K (those of the
+/// blocks of `mine`: assemble_distributed_stiffness); `p` is the whole P, on every process, and
+/// so is the returned u. `centroids` are the blocks', for the rigid-body modes the multigrid
+/// coarsens with. Where the iterations do not converge, K is factorized by MUMPS (Cholesky)
+/// across the processes, unless PETSC_OPTIONS sets -ksp_type or -pc_type; throws ModelError,
+/// saying what to do, when the method chosen there does not converge.
+Eigen::VectorXd petsc_solve(Mat k, const Eigen::VectorXd& p, const std::vector<Vec2>& centroids,
+                            const BlockRange& mine, PetscSolveReport& report);
 
 /// solve_elastic (analysis/elastic_analysis.hpp) with the solve above: the same solution, to
 /// the solver's tolerance; ElasticSolution::factor_nonzeros is 0.

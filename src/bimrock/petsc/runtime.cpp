@@ -14,6 +14,12 @@ PetscRuntime::PetscRuntime() {
   MPI_Comm_size(PETSC_COMM_WORLD, &ranks_);
 }
 
+double PetscRuntime::sum(double x) const {
+  double total = 0.0;
+  MPI_Allreduce(&x, &total, 1, MPI_DOUBLE, MPI_SUM, PETSC_COMM_WORLD);
+  return total;
+}
+
 PetscRuntime::~PetscRuntime() {
   PetscFinalize();
 }

@@ -16,6 +16,8 @@ class PetscRuntime {
   [[nodiscard]] int rank() const { return rank_; }
   /// How many processes the run has (mpirun -n N).
   [[nodiscard]] int ranks() const { return ranks_; }
+  /// The sum of `x` over the processes, on every process (each must call it).
+  [[nodiscard]] double sum(double x) const;
 
  private:
   int rank_ = 0;
