@@ -164,7 +164,7 @@ Eigen::VectorXd petsc_solve(Mat k, const Eigen::VectorXd& p, const std::vector<V
     report.iterations = static_cast<int>(iterations);
     report.method = method(o.ksp, pc);
   }
-  // Every process gets the whole u: its order is the model's (contiguous ranges).
+  // Every process gets the whole u (its ranks' ranges in order: the numbering of the blocks).
   petsc_call(VecScatterCreateToAll(o.u, &o.gather, &o.u_all), "VecScatterCreateToAll");
   petsc_call(VecScatterBegin(o.gather, o.u, o.u_all, INSERT_VALUES, SCATTER_FORWARD),
              "VecScatterBegin");
@@ -203,11 +203,11 @@ ElasticSolution solve_elastic_with_petsc(const Model& model, PetscSolveReport& r
     ScopedTimer t(s.timings, "check supports");
     check_supports(model);
   }
-  int rank = 0;
-  int ranks = 1;
-  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
-  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
-  const BlockRange mine = owned_blocks(model.n_blocks(), rank, ranks);
+  BlockPartition partition;
+  {
+    ScopedTimer t(s.timings, "partition");
+    partition = partition_blocks(model);
+  }
   struct Stiffness {
     Mat k = nullptr;
     ~Stiffness() { MatDestroy(&k); }
@@ -215,16 +215,24 @@ ElasticSolution solve_elastic_with_petsc(const Model& model, PetscSolveReport& r
   Eigen::VectorXd p;
   {
     ScopedTimer t(s.timings, "assemble");
-    stiffness.k = assemble_distributed_stiffness(model, mine);
+    stiffness.k = assemble_distributed_stiffness(model, partition);
     p = assemble_loads(model, model.loads);
   }
   {
     ScopedTimer t(s.timings, "solve (PETSc)");
-    std::vector<Vec2> centroids;
-    centroids.reserve(model.blocks.size());
-    for (const Block& b : model.blocks)
-      centroids.push_back(b.centroid);
-    s.u = petsc_solve(stiffness.k, p, centroids, mine, report);
+    // P, the centroids and u in the partition's numbering of the blocks.
+    Eigen::VectorXd p_numbered(p.size());
+    std::vector<Vec2> centroids(model.blocks.size());
+    for (std::size_t n = 0; n < partition.block.size(); ++n) {
+      const int b = partition.block[n];
+      p_numbered.segment<6>(6 * static_cast<Eigen::Index>(n)) = p.segment<6>(6 * b);
+      centroids[n] = model.blocks[static_cast<std::size_t>(b)].centroid;
+    }
+    const Eigen::VectorXd u =
+        petsc_solve(stiffness.k, p_numbered, centroids, partition.mine, report);
+    s.u.resize(u.size());
+    for (std::size_t n = 0; n < partition.block.size(); ++n)
+      s.u.segment<6>(6 * partition.block[n]) = u.segment<6>(6 * static_cast<Eigen::Index>(n));
   }
   {
     ScopedTimer t(s.timings, "evaluate");

@@ -2,8 +2,8 @@
 /// @file The elastic analysis on PETSc (docs/parallel.md): K u = P solved by conjugate gradients
 /// preconditioned by smoothed-aggregation algebraic multigrid (ML, or GAMG), across the processes
 /// of an MPI run, instead of by K's Cholesky factor. Every process holds the model and assembles
-/// the rows of K of its own range of blocks; every process gets the whole u back, so that the
-/// results are evaluated and written as those of the serial analysis.
+/// the rows of K of its own blocks (distributed_stiffness.hpp); every process gets the whole u
+/// back, so that the results are evaluated and written as those of the serial analysis.
 #include <string>
 
 #include <Eigen/Core>
@@ -32,12 +32,13 @@ inline constexpr double kPetscRelativeTolerance = 1e-12;
 /// stall or diverge.
 inline constexpr int kPetscIterations = 500;
 
-/// u = K^-1 P with PETSc on PETSC_COMM_WORLD. `k` holds this process's rows of K (those of the
-/// blocks of `mine`: assemble_distributed_stiffness); `p` is the whole P, on every process, and
-/// so is the returned u. `centroids` are the blocks', for the rigid-body modes the multigrid
-/// coarsens with. Where the iterations do not converge, K is factorized by MUMPS (Cholesky)
-/// across the processes, unless PETSC_OPTIONS sets -ksp_type or -pc_type; throws ModelError,
-/// saying what to do, when the method chosen there does not converge.
+/// u = K^-1 P with PETSc on PETSC_COMM_WORLD, in the partition's numbering of the blocks. `k`
+/// holds this process's rows of K (those of its blocks, `mine`: assemble_distributed_stiffness);
+/// `p` is the whole P, on every process, and so is the returned u. `centroids` are the blocks',
+/// for the rigid-body modes the multigrid coarsens with. Where the iterations do not converge,
+/// K is factorized by MUMPS (Cholesky) across the processes, unless PETSC_OPTIONS sets
+/// -ksp_type or -pc_type; throws ModelError, saying what to do, when the method chosen there
+/// does not converge.
 Eigen::VectorXd petsc_solve(Mat k, const Eigen::VectorXd& p, const std::vector<Vec2>& centroids,
                             const BlockRange& mine, PetscSolveReport& report);
 
