@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <bimrock/assembly/stiffness_terms.hpp>
+#include <bimrock/petsc/owned.hpp>
 #include <bimrock/petsc/petsc_call.hpp>
 
 namespace bimrock {
@@ -89,28 +90,22 @@ std::vector<PetscInt> destinations(const Model& model, const BlockRange& range) 
     std::copy(coupled[b].begin(), coupled[b].end(), columns + start[b]);
     start[b + 1] = start[b] + static_cast<PetscInt>(coupled[b].size());
   }
-  struct Objects {
-    Mat graph = nullptr;
-    MatPartitioning partitioner = nullptr;
-    IS destination = nullptr;
-    ~Objects() {
-      ISDestroy(&destination);
-      MatPartitioningDestroy(&partitioner);
-      MatDestroy(&graph);
-    }
-  } o;
+  Owned<Mat, MatDestroy> graph;
+  Owned<MatPartitioning, MatPartitioningDestroy> partitioner;
+  Owned<IS, ISDestroy> destination;
   const auto n = static_cast<PetscInt>(model.n_blocks());
   petsc_call(MatCreateMPIAdj(PETSC_COMM_WORLD, static_cast<PetscInt>(coupled.size()), n, start,
-                             columns, nullptr, &o.graph),
+                             columns, nullptr, graph.out()),
              "MatCreateMPIAdj");
-  petsc_call(MatPartitioningCreate(PETSC_COMM_WORLD, &o.partitioner), "MatPartitioningCreate");
-  petsc_call(MatPartitioningSetAdjacency(o.partitioner, o.graph), "MatPartitioningSetAdjacency");
-  petsc_call(MatPartitioningSetFromOptions(o.partitioner), "MatPartitioningSetFromOptions");
-  petsc_call(MatPartitioningApply(o.partitioner, &o.destination), "MatPartitioningApply");
+  petsc_call(MatPartitioningCreate(PETSC_COMM_WORLD, partitioner.out()), "MatPartitioningCreate");
+  petsc_call(MatPartitioningSetAdjacency(partitioner.get(), graph.get()),
+             "MatPartitioningSetAdjacency");
+  petsc_call(MatPartitioningSetFromOptions(partitioner.get()), "MatPartitioningSetFromOptions");
+  petsc_call(MatPartitioningApply(partitioner.get(), destination.out()), "MatPartitioningApply");
   const PetscInt* d = nullptr;
-  petsc_call(ISGetIndices(o.destination, &d), "ISGetIndices");
+  petsc_call(ISGetIndices(destination.get(), &d), "ISGetIndices");
   std::vector<PetscInt> out(d, d + coupled.size());
-  petsc_call(ISRestoreIndices(o.destination, &d), "ISRestoreIndices");
+  petsc_call(ISRestoreIndices(destination.get(), &d), "ISRestoreIndices");
   return out;
 }
 
@@ -145,25 +140,18 @@ std::vector<int> sweep_order(const Model& model) {
     start[b + 1] = static_cast<PetscInt>(columns.size());
   }
   const std::vector<PetscScalar> ones(std::max<std::size_t>(columns.size(), 1), 1.0);
-  struct Objects {
-    Mat graph = nullptr;
-    IS rows = nullptr;
-    IS cols = nullptr;
-    ~Objects() {
-      ISDestroy(&cols);
-      ISDestroy(&rows);
-      MatDestroy(&graph);
-    }
-  } o;
+  Owned<Mat, MatDestroy> graph;
+  Owned<IS, ISDestroy> rows;
+  Owned<IS, ISDestroy> cols;
   const auto n = static_cast<PetscInt>(coupled.size());
   petsc_call(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, n, n, start.data(), columns.data(),
-                                       const_cast<PetscScalar*>(ones.data()), &o.graph),
+                                       const_cast<PetscScalar*>(ones.data()), graph.out()),
              "MatCreateSeqAIJWithArrays");
-  petsc_call(MatGetOrdering(o.graph, MATORDERINGRCM, &o.rows, &o.cols), "MatGetOrdering");
+  petsc_call(MatGetOrdering(graph.get(), MATORDERINGRCM, rows.out(), cols.out()), "MatGetOrdering");
   const PetscInt* order = nullptr;
-  petsc_call(ISGetIndices(o.rows, &order), "ISGetIndices");
+  petsc_call(ISGetIndices(rows.get(), &order), "ISGetIndices");
   std::vector<int> rcm(order, order + n);
-  petsc_call(ISRestoreIndices(o.rows, &order), "ISRestoreIndices");
+  petsc_call(ISRestoreIndices(rows.get(), &order), "ISRestoreIndices");
   const double model_span = mean_span(coupled, position);
   for (std::size_t k = 0; k < rcm.size(); ++k)
     position[static_cast<std::size_t>(rcm[k])] = static_cast<std::int64_t>(k);

@@ -14,6 +14,7 @@
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/model/errors.hpp>
 #include <bimrock/petsc/distributed_stiffness.hpp>
+#include <bimrock/petsc/owned.hpp>
 #include <bimrock/petsc/petsc_call.hpp>
 
 namespace bimrock {
@@ -208,14 +209,11 @@ ElasticSolution solve_elastic_with_petsc(const Model& model, PetscSolveReport& r
     ScopedTimer t(s.timings, "partition");
     partition = partition_blocks(model);
   }
-  struct Stiffness {
-    Mat k = nullptr;
-    ~Stiffness() { MatDestroy(&k); }
-  } stiffness;
+  Owned<Mat, MatDestroy> k;
   Eigen::VectorXd p;
   {
     ScopedTimer t(s.timings, "assemble");
-    stiffness.k = assemble_distributed_stiffness(model, partition);
+    *k.out() = assemble_distributed_stiffness(model, partition);
     p = assemble_loads(model, model.loads);
   }
   {
@@ -228,8 +226,7 @@ ElasticSolution solve_elastic_with_petsc(const Model& model, PetscSolveReport& r
       p_numbered.segment<6>(6 * static_cast<Eigen::Index>(n)) = p.segment<6>(6 * b);
       centroids[n] = model.blocks[static_cast<std::size_t>(b)].centroid;
     }
-    const Eigen::VectorXd u =
-        petsc_solve(stiffness.k, p_numbered, centroids, partition.mine, report);
+    const Eigen::VectorXd u = petsc_solve(k.get(), p_numbered, centroids, partition.mine, report);
     s.u.resize(u.size());
     for (std::size_t n = 0; n < partition.block.size(); ++n)
       s.u.segment<6>(6 * partition.block[n]) = u.segment<6>(6 * static_cast<Eigen::Index>(n));
