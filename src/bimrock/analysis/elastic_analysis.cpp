@@ -7,23 +7,21 @@
 
 namespace bimrock {
 
-void assemble_elastic_system(const Model& model, SparseMatrix& lower, Eigen::VectorXd& p,
-                             Timings& timings) {
-  {
-    ScopedTimer t(timings, "check supports");
-    check_supports(model);
-  }
-  ScopedTimer t(timings, "assemble");
-  lower = assemble_stiffness_lower(model);
-  p = assemble_loads(model, model.loads);
-}
-
 ElasticSolution solve_elastic(const Model& model) {
   const KeptFactorMemoryRelease release_at_end;  // declared first: runs after the factor goes
   ElasticSolution s;
+  {
+    ScopedTimer t(s.timings, "check supports");
+    check_supports(model);
+  }
   SparseMatrix k;
   Eigen::VectorXd p;
-  assemble_elastic_system(model, k, p, s.timings);
+  {
+    ScopedTimer t(s.timings, "assemble");
+    SparseMatrix assembled = assemble_stiffness_lower(model);
+    k.swap(assembled);  // not an assignment: Eigen 3.4 copies a SparseMatrix assigned
+    p = assemble_loads(model, model.loads);
+  }
   SparseCholesky cholesky;
   {
     ScopedTimer t(s.timings, "analyze");

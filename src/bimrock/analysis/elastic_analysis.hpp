@@ -20,12 +20,6 @@ struct ElasticSolution {
   Timings timings;
 };
 
-/// The elastic system of any solver: checks the supports (throws ModelError when the structure
-/// is not fully supported), then assembles K's lower triangle and P (eq. 14), each timed.
-/// (Out-parameters: Eigen 3.4's SparseMatrix has no move constructor.)
-void assemble_elastic_system(const Model& model, SparseMatrix& lower, Eigen::VectorXd& p,
-                             Timings& timings);
-
 /// Checks the supports, assembles and factorizes K, solves for the model's loads and evaluates
 /// every block and interface. Throws ModelError when the structure is not fully supported.
 ElasticSolution solve_elastic(const Model& model);
