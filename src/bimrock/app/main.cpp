@@ -87,13 +87,16 @@ int run_with_petsc([[maybe_unused]] const std::string& case_file, const bimrock:
 
 int run(const std::string& case_file, std::filesystem::path out, const std::string& solver,
         bool quiet) {
-  const bimrock::Case c = bimrock::read_case_file(case_file);
+  bimrock::Case c = bimrock::read_case_file(case_file);
   const bimrock::Model model = bimrock::build_model(c.spec);
   if (out.empty())
     out = default_output(case_file);
   // Both checked before solving: a run must not end, after the work, on a folder it cannot use.
   bimrock::check_output_size(model, c);
   bimrock::check_output_folder(out);
+  // The model holds the blocks now: the case's list of them is not kept through the analysis
+  // (some 180 MiB at 10^6 blocks).
+  std::vector<bimrock::BlockSpec>().swap(c.spec.blocks);
   if (solver == "petsc") {
     if (!model.stages.empty())
       throw bimrock::InputError(

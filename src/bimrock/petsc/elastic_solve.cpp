@@ -139,6 +139,9 @@ Eigen::VectorXd petsc_solve(Mat k, const Eigen::VectorXd& p, const std::vector<V
   petsc_call(KSPSetTolerances(o.ksp, kPetscRelativeTolerance, 0.0, PETSC_DEFAULT, kPetscIterations),
              "KSPSetTolerances");
   petsc_call(KSPSetFromOptions(o.ksp), "KSPSetFromOptions");  // PETSC_OPTIONS may change any of it
+  // The multigrid set up before CG's work vectors exist: its temporaries and those vectors are
+  // not held at once (the peak of a 10^6-block run).
+  petsc_call(PCSetUp(pc), "PCSetUp");
   petsc_call(KSPSolve(o.ksp, o.p, o.u), "KSPSolve");
   KSPConvergedReason reason = KSP_CONVERGED_ITERATING;
   petsc_call(KSPGetConvergedReason(o.ksp, &reason), "KSPGetConvergedReason");
@@ -226,6 +229,7 @@ ElasticSolution solve_elastic_with_petsc(const Model& model, PetscSolveReport& r
       p_numbered.segment<6>(6 * static_cast<Eigen::Index>(n)) = p.segment<6>(6 * b);
       centroids[n] = model.blocks[static_cast<std::size_t>(b)].centroid;
     }
+    p.resize(0);
     const Eigen::VectorXd u = petsc_solve(k.get(), p_numbered, centroids, partition.mine, report);
     s.u.resize(u.size());
     for (std::size_t n = 0; n < partition.block.size(); ++n)
