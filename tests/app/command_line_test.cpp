@@ -110,5 +110,21 @@ TEST(CommandLine, ThePetscSolverRefusesANonlinearCaseBeforeSolving) {
   std::filesystem::remove_all(r.folder);
 }
 
+// The bench's table goes where --json says, its folder made if need be; a file that cannot be
+// written is refused before any run, not found out after them.
+TEST(CommandLine, ABenchTableThatCannotBeWrittenIsRefusedBeforeTheRuns) {
+  const testing::CommandResult made = run_command(
+      "bench --models elastic --elastic-sizes 100 --repetitions 1 --json tables/bench.json");
+  EXPECT_EQ(made.exit_code, 0) << made.err;
+  EXPECT_TRUE(std::filesystem::exists(made.folder / "tables" / "bench.json"));
+  std::filesystem::remove_all(made.folder);
+  const testing::CommandResult refused = run_command(
+      "bench --models elastic --elastic-sizes 100 --repetitions 1 --json /proc/none/bench.json");
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("--json"), std::string::npos) << refused.err;
+  EXPECT_EQ(refused.out.find("elastic model"), std::string::npos) << refused.out;
+  std::filesystem::remove_all(refused.folder);
+}
+
 }  // namespace
 }  // namespace bimrock

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <thread>
 
@@ -82,7 +83,10 @@ void write_outputs(const BenchOptions& options, const std::vector<Row>& rows, in
                         {"rows", nlohmann::json::array()}};
     for (const Row& r : rows)
       j["rows"].push_back(to_json(r));
-    std::ofstream(options.json) << j.dump(2) << '\n';
+    std::ofstream out(options.json);  // checked writable before the runs
+    out << j.dump(2) << '\n';
+    if (!out)
+      throw std::runtime_error(fmt::format("bench: could not write {}", options.json));
   }
   if (!options.plot.empty())
     write_plots(rows, options.plot);
@@ -132,6 +136,16 @@ int run_bench_on_petsc([[maybe_unused]] const BenchOptions& options,
 }  // namespace
 
 int run_bench(const BenchOptions& options) {
+  if (!options.json.empty()) {
+    // Its folder made as the plots' is, and the file tried before the runs: a table that cannot
+    // be written is said at once, not after the work.
+    const fs::path file(options.json);
+    std::error_code ignored;
+    if (file.has_parent_path())
+      fs::create_directories(file.parent_path(), ignored);
+    if (!std::ofstream(file))
+      throw InputError("bimrock bench", 0, "--json", fmt::format("cannot write {}", file.string()));
+  }
   const fs::path scratch = fs::temp_directory_path() / fmt::format("bimrock-bench-{}", ::getpid());
   fs::create_directories(scratch);
   struct Scratch {
