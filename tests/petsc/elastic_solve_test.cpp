@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/elastic_analysis.hpp>
+#include <bimrock/assembly/global_system.hpp>
 #include <bimrock/io/case_reader.hpp>
 #include <bimrock/petsc/elastic_solve.hpp>
 #include <bimrock/petsc/runtime.hpp>

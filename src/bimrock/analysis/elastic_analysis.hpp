@@ -5,7 +5,6 @@
 
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/timings.hpp>
-#include <bimrock/assembly/global_system.hpp>
 
 namespace bimrock {
 

@@ -28,7 +28,7 @@ struct Run {
   int regions = 0;           ///< times K was factorized onto a region (zones then come from it)
   int zone_blocks = 0;       ///< blocks of the last zone
   /// The PETSc backend's solve (empty with CHOLMOD): its method, processes, iterations and
-  /// residual, and the peak growth of all processes' resident sets added up.
+  /// residual, and the peak resident sets of all processes added up.
   std::string method;
   int processes = 1;
   int iterations = 0;

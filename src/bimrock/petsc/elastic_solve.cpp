@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdint>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,6 +10,7 @@
 #include <petscksp.h>
 
 #include <bimrock/analysis/support_check.hpp>
+#include <bimrock/assembly/global_system.hpp>
 #include <bimrock/model/errors.hpp>
 #include <bimrock/petsc/distributed_stiffness.hpp>
 #include <bimrock/petsc/owned.hpp>
