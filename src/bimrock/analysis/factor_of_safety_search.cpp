@@ -15,7 +15,7 @@ StrengthSelection selected_strengths(const Model& model, const FactorOfSafetyOpt
 }
 
 FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<YieldPoint>& points,
-                                     const SparseCholesky& k, const AnalysisState& start,
+                                     const SpdSolver& k, const AnalysisState& start,
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,

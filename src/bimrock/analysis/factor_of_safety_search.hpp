@@ -7,7 +7,7 @@
 
 #include <bimrock/analysis/factor_of_safety.hpp>
 #include <bimrock/analysis/increment.hpp>
-#include <bimrock/solve/sparse_cholesky.hpp>
+#include <bimrock/solve/spd_solver.hpp>
 
 namespace bimrock {
 
@@ -18,7 +18,7 @@ StrengthSelection selected_strengths(const Model& model, const FactorOfSafetyOpt
 /// the analysis' (the reduced models share their geometry and K); `present`, if given, the
 /// blocks and bolts present (after excavations and installations).
 FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<YieldPoint>& points,
-                                     const SparseCholesky& k, const AnalysisState& start,
+                                     const SpdSolver& k, const AnalysisState& start,
                                      const FactorOfSafetyOptions& fos,
                                      const PlasticOptions& options, const CandidateTuning& tuning,
                                      IncrementSolver& solver, IncrementMemory& memory,

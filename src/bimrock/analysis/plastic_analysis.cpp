@@ -57,7 +57,7 @@ IncrementRecord record(const Model& model, const Trial& t, int stage, int increm
 // The stage's reference load: x_ref = K^-1 P_stage, and under displacement control the monitor's
 // row of K's unknowns and its rate along x_ref.
 StageContext stage_context(const Model& model, const std::vector<YieldPoint>& points,
-                           const SparseCholesky& k, const YieldEvaluator& yield, const Stage& stage,
+                           const SpdSolver& k, const YieldEvaluator& yield, const Stage& stage,
                            const Eigen::VectorXd& load, Timings& timings) {
   StageContext ctx{model, points, k, stage, yield, {}, {}, 0.0, &timings};
   {
@@ -310,7 +310,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   // K of the blocks present, assembled and factorized by run_stages at the start and again only
   // after a stage that excavates (its lower triangle is kept: the reduced tangent is K minus the
   // plastic part).
-  StageStructure structure(model, tuning.solver, result.timings);
+  StageStructure structure(model, tuning.solver, tuning.stiffness, result.timings);
   IncrementMemory memory;
   if (!options.factor_of_safety) {
     run_stages(model, structure, index, options, tuning.candidates, memory, on_increment, result);

@@ -6,6 +6,7 @@
 #include <bimrock/analysis/candidates.hpp>
 #include <bimrock/analysis/factor_of_safety.hpp>
 #include <bimrock/solve/increment_solver.hpp>
+#include <bimrock/solve/stiffness_factor.hpp>
 
 namespace bimrock {
 
@@ -28,6 +29,10 @@ struct PlasticOptions {
 struct PlasticTuning {
   CandidateTuning candidates{};
   SolverTuning solver{};
+  /// Where K is factorized (solve/stiffness_factor.hpp): empty, by CHOLMOD in this process; the
+  /// PETSc backend's factorizes it across the processes of an MPI run
+  /// (petsc/distributed_factor.hpp).
+  StiffnessFactorization stiffness{};
 };
 
 }  // namespace bimrock

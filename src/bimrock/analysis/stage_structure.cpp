@@ -1,10 +1,13 @@
 #include <bimrock/analysis/stage_structure.hpp>
 
+#include <utility>
+
 #include <bimrock/analysis/support_check.hpp>
 
 namespace bimrock {
-StageStructure::StageStructure(const Model& model, const SolverTuning& tuning, Timings& timings)
-    : model_(model), tuning_(tuning), timings_(timings) {}
+StageStructure::StageStructure(const Model& model, const SolverTuning& tuning,
+                               StiffnessFactorization factorization, Timings& timings)
+    : model_(model), tuning_(tuning), factorization_(std::move(factorization)), timings_(timings) {}
 
 void StageStructure::stand_on(const Presence& present) {
   if (k_ && present == present_)
@@ -16,10 +19,15 @@ void StageStructure::stand_on(const Presence& present) {
     lower_ = assemble_stiffness_lower(model_, present);
   }
   ScopedTimer f(timings_, "factorize");
-  k_ = std::make_unique<SparseCholesky>();
-  k_->analyze(lower_, 6);
-  if (!k_->factorize(lower_))
-    report_singular_stiffness(model_, k_->failed_column());
+  k_.reset();
+  if (factorization_) {
+    k_ = factorization_(present, lower_);
+  } else {
+    auto cholmod = std::make_unique<CholmodStiffnessFactor>(lower_);
+    if (!cholmod->factorize())
+      report_singular_stiffness(model_, cholmod->failed_column());
+    k_ = std::move(cholmod);
+  }
   present_ = present;
   solver_ = std::make_unique<IncrementSolver>(model_, *k_, lower_, tuning_);
   ++factorizations_;
@@ -34,7 +42,7 @@ void StageStructure::retire() {
   retired_.regions += z.regions;
   retired_.tangent += z.tangent;
   retired_.condensed += z.condensed;
-  retired_solve_seconds_ += k_->work().solve_seconds;
+  retired_solve_seconds_ += k_->solver().work().solve_seconds;
 }
 
 ZoneStatistics StageStructure::zone_statistics() const {
@@ -48,7 +56,7 @@ ZoneStatistics StageStructure::zone_statistics() const {
 }
 
 double StageStructure::solve_seconds() const {
-  return retired_solve_seconds_ + k_->work().solve_seconds;
+  return retired_solve_seconds_ + k_->solver().work().solve_seconds;
 }
 
 }  // namespace bimrock

@@ -11,20 +11,22 @@
 #include <bimrock/model/model.hpp>
 #include <bimrock/model/presence.hpp>
 #include <bimrock/solve/increment_solver.hpp>
-#include <bimrock/solve/sparse_cholesky.hpp>
+#include <bimrock/solve/stiffness_factor.hpp>
 
 namespace bimrock {
 
 class StageStructure {
  public:
-  StageStructure(const Model& model, const SolverTuning& tuning, Timings& timings);
+  /// K is factorized by `factorization` (empty: by CHOLMOD in this process).
+  StageStructure(const Model& model, const SolverTuning& tuning,
+                 StiffnessFactorization factorization, Timings& timings);
 
   /// Makes K that of what is `present`, assembled and factorized anew if it differs from the
   /// last. Throws ModelError naming a block left free.
   void stand_on(const Presence& present);
 
   [[nodiscard]] const Presence& present() const { return present_; }
-  [[nodiscard]] SparseCholesky& k() { return *k_; }
+  [[nodiscard]] const SpdSolver& k() const { return k_->solver(); }
   [[nodiscard]] IncrementSolver& solver() { return *solver_; }
   /// Factorizations of K for what stands (1 without excavation or bolts).
   [[nodiscard]] int factorizations() const { return factorizations_; }
@@ -37,10 +39,11 @@ class StageStructure {
 
   const Model& model_;
   SolverTuning tuning_;
+  StiffnessFactorization factorization_;
   Timings& timings_;
   Presence present_;
   SparseMatrix lower_;
-  std::unique_ptr<SparseCholesky> k_;
+  std::unique_ptr<StiffnessFactor> k_;
   std::unique_ptr<IncrementSolver> solver_;
   int factorizations_ = 0;
   ZoneStatistics retired_;

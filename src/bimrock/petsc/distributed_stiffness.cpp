@@ -221,6 +221,11 @@ BlockPartition partition_blocks(const Model& model) {
 }
 
 Mat assemble_distributed_stiffness(const Model& model, const BlockPartition& partition) {
+  return assemble_distributed_stiffness(model, partition, every_block(model));
+}
+
+Mat assemble_distributed_stiffness(const Model& model, const BlockPartition& partition,
+                                   const Presence& present) {
   // The block rows' non-zero 6 x 6 blocks, on this process's diagonal part or off it.
   const BlockRange& mine = partition.mine;
   std::vector<PetscInt> diagonal_part(static_cast<std::size_t>(mine.last - mine.first), 1);
@@ -248,7 +253,7 @@ Mat assemble_distributed_stiffness(const Model& model, const BlockPartition& par
     petsc_call(MatSetOption(k, MAT_NO_OFF_PROC_ENTRIES, PETSC_TRUE), "MatSetOption");
     petsc_call(MatSetOption(k, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
     OwnedRows rows(k, partition);
-    add_stiffness_terms(model, every_block(model), rows);
+    add_stiffness_terms(model, present, rows);
     petsc_call(MatAssemblyBegin(k, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
     petsc_call(MatAssemblyEnd(k, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
     petsc_call(MatSetOption(k, MAT_SPD, PETSC_TRUE), "MatSetOption(MAT_SPD)");

@@ -10,6 +10,7 @@
 #include <petscmat.h>
 
 #include <bimrock/model/model.hpp>
+#include <bimrock/model/presence.hpp>
 
 namespace bimrock {
 
@@ -43,6 +44,9 @@ struct BlockPartition {
 /// K's rows of this process's blocks (`partition.mine`), in the partition's numbering, as an
 /// AIJ matrix of block size 6 (a block's six unknowns) on PETSC_COMM_WORLD, preallocated
 /// exactly from the block graph and assembled. Every process calls it; the caller destroys it.
+/// K is that of what stands (`present`: the analysis' stages), or of every block.
+[[nodiscard]] Mat assemble_distributed_stiffness(const Model& model, const BlockPartition& partition,
+                                                 const Presence& present);
 [[nodiscard]] Mat assemble_distributed_stiffness(const Model& model,
                                                  const BlockPartition& partition);
 

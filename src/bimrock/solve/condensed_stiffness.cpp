@@ -4,6 +4,7 @@
 #include <memory>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 namespace bimrock {
 
@@ -22,9 +23,28 @@ std::vector<std::vector<int>> neighbours(const Model& model) {
 }
 }  // namespace
 
-CondensedStiffness::CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower)
+CondensedStiffness::CondensedStiffness(const SpdSolver& k, const SparseMatrix& k_lower)
     : blocks_(static_cast<std::size_t>(k_lower.rows() / kBlock)), lower_(&k_lower), factor_(&k) {
   std::iota(blocks_.begin(), blocks_.end(), 0);
+}
+
+CondensedStiffness::CondensedStiffness(const std::vector<char>& region, SparseMatrix s_lower)
+    : zone_(region), own_lower_(std::move(s_lower)) {
+  for (std::size_t b = 0; b < zone_.size(); ++b)
+    if (zone_[b])
+      blocks_.push_back(static_cast<int>(b));
+  const auto n = static_cast<std::int64_t>(kBlock * blocks_.size());
+  if (own_lower_.rows() != n || own_lower_.cols() != n)
+    throw std::logic_error("CondensedStiffness: S is not of the region's size");
+  std::vector<Eigen::Triplet<double, std::int64_t>> ones;
+  ones.reserve(static_cast<std::size_t>(n));
+  for (std::size_t k = 0; k < blocks_.size(); ++k)
+    for (int d = 0; d < kBlock; ++d)
+      ones.emplace_back(kBlock * static_cast<std::int64_t>(blocks_[k]) + d,
+                        kBlock * static_cast<std::int64_t>(k) + d, 1.0);
+  select_.resize(kBlock * static_cast<std::int64_t>(zone_.size()), n);
+  select_.setFromTriplets(ones.begin(), ones.end());
+  lower_ = &own_lower_;
 }
 
 CondensedStiffness::CondensedStiffness(const CondensedStiffness& base, const SparseCholesky& factor,

@@ -31,7 +31,7 @@ namespace bimrock {
 class CondensedStiffness {
  public:
   /// No condensation: S is K and its factor K's.
-  CondensedStiffness(const SparseCholesky& k, const SparseMatrix& k_lower);
+  CondensedStiffness(const SpdSolver& k, const SparseMatrix& k_lower);
   /// `base` condensed onto its zone of blocks of level >= `level`: `factor` is base's S
   /// factorized in the order of levels given per block of base (SparseCholesky::analyze_last);
   /// this S is read from it, and solved through it if `solvable` (else factor() must not be
@@ -39,6 +39,11 @@ class CondensedStiffness {
   /// then outlive this and stay as it is.
   CondensedStiffness(const CondensedStiffness& base, const SparseCholesky& factor, int level,
                      bool solvable = true);
+
+  /// K condensed onto the blocks `region` flags (per block of the model) as a region, its S
+  /// given: the lower triangle, in the unknowns of the region's blocks in ascending order (6
+  /// each). It has no factor: factor() must not be used.
+  CondensedStiffness(const std::vector<char>& region, SparseMatrix s_lower);
 
   CondensedStiffness(const CondensedStiffness&) = delete;
   CondensedStiffness& operator=(const CondensedStiffness&) = delete;

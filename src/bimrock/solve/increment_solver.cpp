@@ -108,8 +108,8 @@ bool decided(const LcpResult& r) {
 
 }  // namespace
 
-IncrementSolver::IncrementSolver(const Model& model, SparseCholesky& k, const SparseMatrix& k_lower,
-                                 const SolverTuning& tuning)
+IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
+                                 const SparseMatrix& k_lower, const SolverTuning& tuning)
     : tuning_(tuning),
       zones_(model, k, k_lower, tuning.zones),
       active_set_(ActiveSetOptions{.max_iterations = tuning.active_set_iterations,

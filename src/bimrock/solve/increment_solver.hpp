@@ -71,9 +71,9 @@ class IncrementSolver {
   /// ends the solve.
   using Interrupt = ActiveSetLcp::Interrupt;
 
-  /// `k` is K's factor (reordered when zones change), `k_lower` its lower triangle; both must
-  /// outlive this.
-  IncrementSolver(const Model& model, SparseCholesky& k, const SparseMatrix& k_lower,
+  /// `k` is K's factor (condensing onto regions and zones), `k_lower` its lower triangle; both
+  /// must outlive this.
+  IncrementSolver(const Model& model, StiffnessFactor& k, const SparseMatrix& k_lower,
                   const SolverTuning& tuning);
 
   /// Makes the LCPs hold every flagged block (per block of the model).

@@ -25,9 +25,9 @@ int size(const std::vector<char>& flags) {
 
 }  // namespace
 
-StiffnessZones::StiffnessZones(const Model& model, SparseCholesky& k, const SparseMatrix& k_lower,
+StiffnessZones::StiffnessZones(const Model& model, StiffnessFactor& k, const SparseMatrix& k_lower,
                                const ZoneTuning& tuning)
-    : model_(model), k_(k), k_lower_(k_lower), tuning_(tuning), whole_k_(k, k_lower) {}
+    : model_(model), k_(k), k_lower_(k_lower), tuning_(tuning), whole_k_(k.solver(), k_lower) {}
 
 bool StiffnessZones::covers(const YieldPoint& point) const {
   return condensed_ && condensed_->covers(point.block_i) &&
@@ -73,6 +73,9 @@ void StiffnessZones::hold(const std::vector<char>& needed) {
       top = plan(needed, target, most);
     }
   }
+  // A zone straight from K needs K's factor in this process.
+  if (!region_ && k_.reorderable() == nullptr)
+    top = 0;
   if (top == 0) {
     whole();
   } else {
@@ -117,7 +120,7 @@ int StiffnessZones::plan(const std::vector<char>& needed, int target, double mos
 
 // K condensed onto a region around `needed` of region_growth times the zone's target, at least
 // kRegionRegrowth times the last region, at most `most` blocks (K factorized with the region
-// last); none where that leaves no room for the zone to grow.
+// condensed by its factor); none where that leaves no room for the zone to grow.
 void StiffnessZones::make_region(const std::vector<char>& needed, int target, double most) {
   const double wanted = std::max(tuning_.region_growth * target, kRegionRegrowth * last_region_);
   const int blocks = static_cast<int>(std::min(wanted, most));
@@ -126,10 +129,7 @@ void StiffnessZones::make_region(const std::vector<char>& needed, int target, do
   std::vector<char> r = grow_zone(model_, needed, blocks);
   if (size(r) > most)
     return;
-  k_.analyze_last(k_lower_, 6, r);
-  if (!k_.factorize(k_lower_))
-    throw std::logic_error("StiffnessZones: K, positive definite before, is not now");
-  region_ = std::make_unique<CondensedStiffness>(whole_k_, k_, 1, false);
+  region_ = k_.condense(whole_k_, r);
   // Zones keep off the region's edge, whose blocks its S couples all together.
   region_inside_ = interior(model_, r);
   last_region_ = region_->zone_blocks();
@@ -162,7 +162,7 @@ void StiffnessZones::use(int level) {
 void StiffnessZones::whole() {
   level_ = 0;
   levels_.clear();
-  condensed_ = std::make_unique<CondensedStiffness>(k_, k_lower_);
+  condensed_ = std::make_unique<CondensedStiffness>(k_.solver(), k_lower_);
   emplace_solvers();
 }
 

@@ -17,6 +17,7 @@
 #include <bimrock/solve/flexibility_columns.hpp>
 #include <bimrock/solve/reduced_tangent.hpp>
 #include <bimrock/solve/sparse_cholesky.hpp>
+#include <bimrock/solve/stiffness_factor.hpp>
 
 namespace bimrock {
 
@@ -50,9 +51,10 @@ struct ZoneStatistics {
 
 class StiffnessZones {
  public:
-  /// `k` is K's factor (reordered when a region or a zone changes), `k_lower` K's lower triangle;
-  /// both must outlive this.
-  StiffnessZones(const Model& model, SparseCholesky& k, const SparseMatrix& k_lower,
+  /// `k` is K's factor (condensing onto a region, or reordered for a zone), `k_lower` K's
+  /// lower triangle; both must outlive this. Where `k` is not reorderable, zones are condensed
+  /// from regions only, and K itself is used where no region holds them.
+  StiffnessZones(const Model& model, StiffnessFactor& k, const SparseMatrix& k_lower,
                  const ZoneTuning& tuning);
 
   /// Makes the stiffness hold every flagged block (per block of the model): the zone in use if
@@ -73,7 +75,7 @@ class StiffnessZones {
 
  private:
   [[nodiscard]] const CondensedStiffness& base() const { return region_ ? *region_ : whole_k_; }
-  SparseCholesky& base_factor() { return region_ ? region_factor_ : k_; }
+  SparseCholesky& base_factor() { return region_ ? region_factor_ : *k_.reorderable(); }
   int plan(const std::vector<char>& needed, int target, double most);
   void make_region(const std::vector<char>& needed, int target, double most);
   void drop_region();
@@ -84,7 +86,7 @@ class StiffnessZones {
   void emplace_solvers();
 
   const Model& model_;
-  SparseCholesky& k_;
+  StiffnessFactor& k_;
   const SparseMatrix& k_lower_;
   ZoneTuning tuning_;
   const CondensedStiffness whole_k_;  // K itself: the base of a region, or of zones without one
