@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <unistd.h>
@@ -20,6 +21,7 @@
 #include <bimrock/solve/factor_memory.hpp>
 
 #ifdef BIMROCK_WITH_PETSC
+#include <bimrock/petsc/distributed_factor.hpp>
 #include <bimrock/petsc/elastic_solve.hpp>
 #include <bimrock/petsc/runtime.hpp>
 #endif
@@ -57,15 +59,62 @@ std::filesystem::path default_output(const std::string& case_file) {
   return std::filesystem::path("results") / (named ? folder / path.stem() : path.stem());
 }
 
-// `run --solver petsc` (docs/parallel.md): an elastic case solved with PETSc, by every process
-// of an MPI run (mpirun -n N bimrock run ...); the first writes the results and prints.
+// A staged case's analysis (run_plastic_analysis with `tuning`); the results are written and
+// printed where `writes` (the first process of an MPI run, the only one of a serial run).
+int run_stages(const std::string& case_file, const bimrock::Case& c, const bimrock::Model& model,
+               const std::filesystem::path& out, bool quiet, const bimrock::PlasticTuning& tuning,
+               bool writes) {
+  quiet = quiet || !writes;
+  if (!quiet)
+    bimrock::print_model(model);  // the size first: the analysis may take a while
+  std::optional<bimrock::PlasticResultsWriter> writer;
+  if (writes)
+    writer.emplace(model, c.output, out);
+  double elapsed = 0.0;
+  const bimrock::PlasticResult result = bimrock::run_plastic_analysis(
+      model, c.plastic,
+      [&](const bimrock::IncrementRecord& r, const bimrock::AnalysisState& s) {
+        if (writer)
+          writer->on_increment(r, s);
+        elapsed += r.seconds;
+        if (!quiet)
+          bimrock::print_increment(model, r, elapsed);
+      },
+      tuning);
+  if (writer) {
+    const bimrock::ElasticSolution fields = writer->finish(result);
+    if (!quiet)
+      bimrock::print_plastic_summary(model, result, fields, out);
+  }
+  if (result.stopped) {
+    if (writes)
+      fmt::print(stderr, "error: {}: stage '{}' stopped at factor {}: {}\n", case_file,
+                 model.stages[static_cast<std::size_t>(result.stopped->stage)].name,
+                 result.stopped->factor, result.stopped->reason);
+    return kStopped;
+  }
+  return kOk;
+}
+
+// `run --solver petsc` (docs/parallel.md): the case solved with PETSc by every process of an MPI
+// run (mpirun -n N bimrock run ...); the first writes the results and prints. An elastic case
+// by conjugate gradients with multigrid, a staged one on K factorized by MUMPS.
 int run_with_petsc([[maybe_unused]] const std::string& case_file, const bimrock::Case& c,
                    const bimrock::Model& model, const std::filesystem::path& out, bool quiet) {
 #ifdef BIMROCK_WITH_PETSC
   const bimrock::PetscRuntime petsc;
+  const bool writes = petsc.rank() == 0;
+  if (!model.stages.empty()) {
+    if (writes && !quiet)
+      fmt::print("PETSc: K factorized by MUMPS on {} process{}\n", petsc.ranks(),
+                 petsc.ranks() == 1 ? "" : "es");
+    bimrock::PlasticTuning tuning;
+    tuning.stiffness = bimrock::distributed_factorization(model);
+    return run_stages(case_file, c, model, out, quiet, tuning, writes);
+  }
   bimrock::PetscSolveReport report;
   const bimrock::ElasticSolution solution = bimrock::solve_elastic_with_petsc(model, report);
-  if (petsc.rank() != 0)
+  if (!writes)
     return kOk;
   bimrock::write_elastic_results(model, solution, c.output, out);
   if (!quiet) {
@@ -97,15 +146,8 @@ int run(const std::string& case_file, std::filesystem::path out, const std::stri
   // The model holds the blocks now: the case's list of them is not kept through the analysis
   // (some 180 MiB at 10^6 blocks).
   std::vector<bimrock::BlockSpec>().swap(c.spec.blocks);
-  if (solver == "petsc") {
-    if (!model.stages.empty())
-      throw bimrock::InputError(
-          case_file, 0, "--solver petsc",
-          fmt::format("the PETSc backend solves elastic cases (no stages), and this case has "
-                      "{} stage(s): run it without --solver petsc (CHOLMOD)",
-                      model.stages.size()));
+  if (solver == "petsc")
     return run_with_petsc(case_file, c, model, out, quiet);
-  }
   if (model.stages.empty()) {
     const bimrock::ElasticSolution solution = bimrock::solve_elastic(model);
     bimrock::write_elastic_results(model, solution, c.output, out);
@@ -113,27 +155,7 @@ int run(const std::string& case_file, std::filesystem::path out, const std::stri
       bimrock::print_summary(model, solution, out);
     return kOk;
   }
-  if (!quiet)
-    bimrock::print_model(model);  // the size first: the analysis may take a while
-  bimrock::PlasticResultsWriter writer(model, c.output, out);
-  double elapsed = 0.0;
-  const bimrock::PlasticResult result = bimrock::run_plastic_analysis(
-      model, c.plastic, [&](const bimrock::IncrementRecord& r, const bimrock::AnalysisState& s) {
-        writer.on_increment(r, s);
-        elapsed += r.seconds;
-        if (!quiet)
-          bimrock::print_increment(model, r, elapsed);
-      });
-  const bimrock::ElasticSolution fields = writer.finish(result);
-  if (!quiet)
-    bimrock::print_plastic_summary(model, result, fields, out);
-  if (result.stopped) {
-    fmt::print(stderr, "error: {}: stage '{}' stopped at factor {}: {}\n", case_file,
-               model.stages[static_cast<std::size_t>(result.stopped->stage)].name,
-               result.stopped->factor, result.stopped->reason);
-    return kStopped;
-  }
-  return kOk;
+  return run_stages(case_file, c, model, out, quiet, {}, true);
 }
 
 int check(const std::string& case_file, bool quiet) {
@@ -170,7 +192,7 @@ int main(int argc, char** argv) {
   std::string solver = "cholmod";
   run_cmd
       ->add_option("--solver", solver,
-                   "cholmod (default), or petsc: an elastic case with PETSc, under mpirun too "
+                   "cholmod (default), or petsc: the case with PETSc, under mpirun too "
                    "(docs/parallel.md)")
       ->check(CLI::IsMember({"cholmod", "petsc"}));
 
