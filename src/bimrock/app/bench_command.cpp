@@ -16,6 +16,7 @@
 #include <bimrock/analysis/memory_probe.hpp>
 #include <bimrock/model/errors.hpp>
 #ifdef BIMROCK_WITH_PETSC
+#include <bimrock/petsc/distributed_factor.hpp>
 #include <bimrock/petsc/elastic_solve.hpp>
 #include <bimrock/petsc/runtime.hpp>
 #endif
@@ -92,16 +93,10 @@ void write_outputs(const BenchOptions& options, const std::vector<Row>& rows, in
     write_plots(rows, options.plot);
 }
 
-// The elastic model on the PETSc backend, on every process of an MPI run; the first prints and
-// writes (docs/parallel.md).
+// The models on the PETSc backend, on every process of an MPI run; the first prints and writes
+// (docs/parallel.md).
 int run_bench_on_petsc([[maybe_unused]] const BenchOptions& options,
                        [[maybe_unused]] const fs::path& scratch) {
-  for (const std::string& model : options.models)
-    if (model != "elastic")
-      throw InputError("bimrock bench", 0, "--solver petsc",
-                       fmt::format("the PETSc backend solves the elastic model only, not '{}': "
-                                   "add --models elastic",
-                                   model));
 #ifdef BIMROCK_WITH_PETSC
   const PetscRuntime petsc;
   const bool first = petsc.rank() == 0;
@@ -122,7 +117,12 @@ int run_bench_on_petsc([[maybe_unused]] const BenchOptions& options,
     run.all_processes_peak_bytes = petsc.sum(static_cast<double>(peak_memory_bytes()));
     return s;
   };
-  const std::vector<Row> rows = run_all(options, scratch, solve, {options.limit, first});
+  const RunSettings settings{.limit = options.limit,
+                             .first_process = first,
+                             .stiffness = distributed_factorization,
+                             .stiffness_method = "K by MUMPS",
+                             .sum_over_processes = [&petsc](double x) { return petsc.sum(x); }};
+  const std::vector<Row> rows = run_all(options, scratch, solve, settings);
   if (first)
     write_outputs(options, rows, petsc.ranks());
   return 0;
@@ -160,7 +160,9 @@ int run_bench(const BenchOptions& options) {
       "repetitions, medians; SI units\n",
       std::thread::hardware_concurrency(), blas_threads(), options.repetitions);
   const ElasticSolve solve = [](const Model& model, Run&) { return solve_elastic(model); };
-  const std::vector<Row> rows = run_all(options, scratch, solve, {options.limit, true});
+  RunSettings settings;
+  settings.limit = options.limit;
+  const std::vector<Row> rows = run_all(options, scratch, solve, settings);
   write_outputs(options, rows, 1);
   return 0;
 }

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/core.h>
@@ -144,35 +146,49 @@ Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
   PlasticOptions options;
   if (factor_of_safety)
     options.factor_of_safety = FactorOfSafetyOptions{};
+  PlasticTuning tuning;
+  if (settings.stiffness)
+    tuning.stiffness = settings.stiffness(model);
   add(run, "build model", seconds_since(start), static_cast<double>(peak_memory_bytes()));
   double writing = 0.0;
   PlasticResult result;
   std::vector<YieldPoint> points;  // for the verbose lines only
   {
-    PlasticResultsWriter writer(model, {}, scratch / "plastic");
-    result = run_plastic_analysis(
-        model, options, [&](const IncrementRecord& r, const AnalysisState& st) {
-          const auto w = Clock::now();
-          writer.on_increment(r, st);
-          if (std::getenv("BIMROCK_BENCH_VERBOSE")) {
-            if (points.empty())
-              points = make_yield_points(model);
-            const auto [zone, boundary] = plastic_zone(model, points, st);
-            fmt::print(
-                stderr,
-                "  stage {} inc {} factor {:.4f} lcp {} yielding {} open {} as-it {} "
-                "tangent {} pivots {} rounds {} {:.3f} s, growth now {:.0f} MiB, peak "
-                "{:.0f} MiB, plastic zone {} blocks ({} on its boundary)\n",
-                r.stage, r.increment, r.stage_factor, r.lcp_size, r.yielding_points, r.open_points,
-                r.active_set_iterations, r.tangent_factorizations, r.pivots, r.rounds, r.seconds,
-                (static_cast<double>(current_memory_bytes()) - before) / 1048576.0,
-                (static_cast<double>(peak_memory_bytes()) - before) / 1048576.0, zone, boundary);
-          }
-          writing += seconds_since(w);
-        });
+    // Written by the first process only, as `bimrock run` does.
+    std::optional<PlasticResultsWriter> writer;
+    if (settings.first_process)
+      writer.emplace(model, OutputOptions{}, scratch / "plastic");
+    const auto on_increment = [&](const IncrementRecord& r, const AnalysisState& st) {
+      const auto w = Clock::now();
+      if (writer)
+        writer->on_increment(r, st);
+      if (std::getenv("BIMROCK_BENCH_VERBOSE")) {
+        if (points.empty())
+          points = make_yield_points(model);
+        const auto [zone, boundary] = plastic_zone(model, points, st);
+        fmt::print(stderr,
+                   "  stage {} inc {} factor {:.4f} lcp {} yielding {} open {} as-it {} "
+                   "tangent {} pivots {} rounds {} {:.3f} s, growth now {:.0f} MiB, peak "
+                   "{:.0f} MiB, plastic zone {} blocks ({} on its boundary)\n",
+                   r.stage, r.increment, r.stage_factor, r.lcp_size, r.yielding_points,
+                   r.open_points, r.active_set_iterations, r.tangent_factorizations, r.pivots,
+                   r.rounds, r.seconds,
+                   (static_cast<double>(current_memory_bytes()) - before) / 1048576.0,
+                   (static_cast<double>(peak_memory_bytes()) - before) / 1048576.0, zone, boundary);
+      }
+      writing += seconds_since(w);
+    };
+    result = run_plastic_analysis(model, options, on_increment, tuning);
     run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
+    if (settings.sum_over_processes) {
+      run.method = settings.stiffness_method;
+      run.processes = static_cast<int>(std::lround(settings.sum_over_processes(1.0)));
+      run.all_processes_peak_bytes =
+          settings.sum_over_processes(static_cast<double>(peak_memory_bytes()));
+    }
     start = Clock::now();
-    (void)writer.finish(result);
+    if (writer)
+      (void)writer->finish(result);
     writing += seconds_since(start);
   }
   add_timings(run, result.timings);
@@ -190,7 +206,7 @@ Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
   run.reserve_switches = result.reserve_switches;
   run.regions = result.regions;
   run.zone_blocks = result.zone_blocks;
-  if (settings.limit)
+  if (settings.limit && settings.first_process)
     measure_limit(model, run);
   return run;
 }

@@ -11,6 +11,7 @@
 
 #include <bimrock/analysis/elastic_analysis.hpp>
 #include <bimrock/reference/reference_cases.hpp>
+#include <bimrock/solve/stiffness_factor.hpp>
 
 namespace bimrock::bench {
 
@@ -47,6 +48,13 @@ struct RunSettings {
   /// The first process of an MPI run (the only one of a serial run): it writes the results and
   /// measures the limit; the others only take part in the solve.
   bool first_process = true;
+  /// The plastic model's factorization of K (empty: CHOLMOD in this process), and what it is
+  /// called in the table.
+  std::function<StiffnessFactorization(const Model&)> stiffness;
+  std::string stiffness_method;
+  /// A value added up over the processes of an MPI run (empty: a serial run), for the peak
+  /// memory of all of them.
+  std::function<double(double)> sum_over_processes;
 };
 
 /// The elastic model of `n` blocks (brick_mass_case) solved by `solve`, its results written

@@ -1,6 +1,7 @@
 #include "bimrock/app/bench_table.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include <fmt/core.h>
 
@@ -89,12 +90,18 @@ void print_row(const Row& r) {
   else
     fmt::print("  {:<34} {:>10} {:>10}\n", "physical limit (K + CHOLMOD alone)", "-", "-");
   fmt::print("  (RSS peak: the process's resident set in MiB; the last two rows: its growth)\n");
-  if (!r.first.method.empty())
+  if (!r.first.method.empty()) {
+    // The elastic model's solve has iterations and a residual; the plastic models' direct
+    // factor has neither.
+    const std::string solve = r.first.iterations > 0
+                                  ? fmt::format(", {} iterations, relative residual {:.2e}",
+                                                r.first.iterations, r.first.relative_residual)
+                                  : std::string();
     fmt::print(
-        "  PETSc: {} on {} process{}, {} iterations, relative residual {:.2e}; all processes' "
-        "resident sets {:.0f} MiB at their peaks\n",
-        r.first.method, r.first.processes, r.first.processes == 1 ? "" : "es", r.first.iterations,
-        r.first.relative_residual, mib(r.first.all_processes_peak_bytes));
+        "  PETSc: {} on {} process{}{}; all processes' resident sets {:.0f} MiB at their peaks\n",
+        r.first.method, r.first.processes, r.first.processes == 1 ? "" : "es", solve,
+        mib(r.first.all_processes_peak_bytes));
+  }
   // A growth under 1 MiB (the smallest models) is the allocator's noise: no memory ratio then.
   if (r.limit > 0.0)
     fmt::print("  ratio to the limit: time {:.2f}, memory {}\n", r.total / r.limit,

@@ -73,9 +73,20 @@ void StiffnessZones::hold(const std::vector<char>& needed) {
       top = plan(needed, target, most);
     }
   }
-  // A zone straight from K needs K's factor in this process.
-  if (!region_ && k_.reorderable() == nullptr)
-    top = 0;
+  // A zone straight from K needs K's factor in this process. Where it is not (the PETSc
+  // backend's), the zone's outermost reserve is condensed as a region and the zone planned inside
+  // it.
+  if (top > 0 && !region_ && k_.reorderable() == nullptr) {
+    std::vector<char> outer(levels_.size(), 0);
+    for (std::size_t b = 0; b < levels_.size(); ++b)
+      outer[b] = levels_[b] >= 1 ? 1 : 0;
+    condense_region(outer);
+    top = plan(needed, target, most);
+    if (!holds(needed, top)) {
+      drop_region();
+      top = 0;
+    }
+  }
   if (top == 0) {
     whole();
   } else {
@@ -129,9 +140,13 @@ void StiffnessZones::make_region(const std::vector<char>& needed, int target, do
   std::vector<char> r = grow_zone(model_, needed, blocks);
   if (size(r) > most)
     return;
-  region_ = k_.condense(whole_k_, r);
+  condense_region(r);
+}
+
+void StiffnessZones::condense_region(const std::vector<char>& region) {
+  region_ = k_.condense(whole_k_, region);
   // Zones keep off the region's edge, whose blocks its S couples all together.
-  region_inside_ = interior(model_, r);
+  region_inside_ = interior(model_, region);
   last_region_ = region_->zone_blocks();
   ++counts_.regions;
 }

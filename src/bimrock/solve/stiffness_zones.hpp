@@ -78,6 +78,7 @@ class StiffnessZones {
   SparseCholesky& base_factor() { return region_ ? region_factor_ : *k_.reorderable(); }
   int plan(const std::vector<char>& needed, int target, double most);
   void make_region(const std::vector<char>& needed, int target, double most);
+  void condense_region(const std::vector<char>& region);
   void drop_region();
   [[nodiscard]] bool holds(const std::vector<char>& needed, int level) const;
   void use(int level);
