@@ -8,7 +8,6 @@
 #include <utility>
 #include <vector>
 
-#include <fmt/core.h>
 
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/model/errors.hpp>
