@@ -39,7 +39,7 @@
 //    mesh is the wedge mechanism of 45 degree slip lines, q = 6 c exactly; the test asserts that
 //    (B/h = 4 and 6 carry 5.99-6.00 c before they stop, 0.06% apart between joint stiffnesses).
 //
-// Known solver limit (see the DISABLED_ test at the end): under displacement control the
+// Known solver limit (the last test shows it): under displacement control the
 // increment's LCP is not symmetric, and on the interfaces-only meshes its matrix is positive
 // semi-definite with hundreds of near-zero eigenvalues. Where the active-set method and the
 // semismooth Newton method do not converge, Lemke's rays on such LCPs are no certificates, and
@@ -88,7 +88,7 @@ constexpr double kPoisson = 0.3;
 constexpr double kHalfWidth = 1.0;  // b = B / 2 [m]
 constexpr int kPlanes = 24;         // the default polygon of the Tresca criterion
 /// Yielding joints: k = p E / l. Stiff enough that the joints add ~1% to the elastic
-/// settlement; the collapse load does not depend on it (but see the DISABLED_ test).
+/// settlement; the collapse load does not depend on it (but see the last test).
 constexpr double kJointPenalty = 100.0;
 
 enum class Yielding { interfaces, blocks, both };
@@ -245,20 +245,36 @@ TEST(Prandtl, InterfacesOnlyFindTheFortyFiveDegreeWedgeMechanism) {
   EXPECT_NEAR(r.q, 6.0, 6e-3);
 }
 
-// A solver problem found with this test (to enable once fixed, see the file comment).
-
 // The upper bound theorem: every mechanism of the interfaces-only block mass is a Tresca
 // mechanism (rigid blocks with slip along the joints, dissipating c per unit slip), so its
 // collapse pressure cannot be below (2 + pi) c; and the limit load of a perfectly plastic body
-// does not depend on its elastic stiffness. Measured (48 s): every run stays above (2 + pi) c;
-// B/h = 4 and 6 agree between the stiffnesses to 0.06%, B/h = 8 stops undecided before its
-// plateau at 5.317 c (penalty 100) and 5.228 c (1e4), 1.7% apart (the file comment says why).
-TEST(Prandtl, DISABLED_InterfacesOnlyCollapseIsAnUpperBoundWhateverTheJointStiffness) {
+// does not depend on its elastic stiffness. B/h = 4 and 6 show both: every run stays above
+// (2 + pi) c and reaches its plateau, and the joint stiffnesses agree (to 0.06%). B/h = 8 shows
+// why the same cannot be asked of the finer mesh (the file comment): both runs stop undecided
+// before the plateau the coarser mesh has reached (5.317 c with penalty 100, 5.228 c with 1e4,
+// against 5.999 c), so their largest pressures carried are not the collapse load and differ by
+// 1.7% between the stiffnesses. (With 24 increments instead of 12 the softer joints reach 5.990
+// c, the stiffer ones stop at 5.227 c again: the stop's advice, more increments, does not help
+// there.) Once the solver decides those increments, this test fails: then it asks B/h = 8 what
+// it asks the coarser meshes.
+TEST(Prandtl, InterfacesOnlyCollapseIsAnUpperBoundWhateverTheJointStiffness) {
+  if (kSanitized)
+    GTEST_SKIP() << "25 s in a release build; the coarse meshes are checked above";
+  double plateau = 0.0;  // of B/h = 6
   for (int n : {2, 3, 4}) {
     const FootingResult soft = collapse_pressure({Yielding::interfaces, n, 100.0});
     const FootingResult stiff = collapse_pressure({Yielding::interfaces, n, 1e4});
-    EXPECT_GE(soft.q, kPrandtl * (1.0 - 1e-3)) << "B/h = " << 2 * n;
-    EXPECT_NEAR(soft.q, stiff.q, 1e-3 * soft.q) << "B/h = " << 2 * n;
+    for (const FootingResult* r : {&soft, &stiff})
+      EXPECT_GE(r->q, kPrandtl * (1.0 - 1e-3)) << "B/h = " << 2 * n;
+    if (n < 4) {
+      EXPECT_NEAR(soft.q, stiff.q, 1e-3 * soft.q) << "B/h = " << 2 * n;
+      plateau = soft.q;
+      continue;
+    }
+    for (const FootingResult* r : {&soft, &stiff}) {
+      EXPECT_EQ(r->note.rfind("stopped: ", 0), 0u) << r->note;
+      EXPECT_LT(r->q, 0.95 * plateau) << "B/h = 8 reached its plateau: ask it what B/h = 6 is";
+    }
   }
 }
 
