@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 #include <Eigen/Cholesky>
@@ -84,6 +85,28 @@ TEST(DistributedFactor, SolvesWithKToRoundOff) {
   EXPECT_LT(
       (k * factor->solver().solve(Eigen::VectorXd(b.col(1))) - b.col(1)).cwiseAbs().maxCoeff(),
       round_off * b.cwiseAbs().maxCoeff());
+}
+
+// The processes run the same analysis; were they to ask for different solves (a bug), they would
+// wait on each other forever in MUMPS. Each solve compares them first: all processes stop with an
+// internal error instead (on one process there is nothing to differ).
+TEST(DistributedFactor, ProcessesThatAskForDifferentSolvesStopTogether) {
+  const Model model = build_model(brick_mass_case(100));
+  const SparseMatrix lower = assemble_stiffness_lower(model);
+  const std::unique_ptr<StiffnessFactor> factor =
+      distributed_factorization(model)(every_block(model), lower);
+  int rank = 0;
+  int ranks = 1;
+  MPI_Comm_rank(PETSC_COMM_WORLD, &rank);
+  MPI_Comm_size(PETSC_COMM_WORLD, &ranks);
+  const Eigen::VectorXd b = Eigen::VectorXd::Constant(lower.rows(), 1.0 + rank);
+  if (ranks == 1)
+    EXPECT_NO_THROW((void)factor->solver().solve(b));
+  else
+    EXPECT_THROW((void)factor->solver().solve(b), std::logic_error);
+  // And they go on together where they agree.
+  EXPECT_NO_THROW(
+      (void)factor->solver().solve(Eigen::VectorXd(Eigen::VectorXd::Ones(lower.rows()))));
 }
 
 // Zones condensed from the first LCPs on, so that a small model uses them: inside regions grown

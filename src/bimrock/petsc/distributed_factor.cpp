@@ -1,13 +1,14 @@
 #include <bimrock/petsc/distributed_factor.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdint>
 #include <memory>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
-
 
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/model/errors.hpp>
@@ -24,6 +25,25 @@ constexpr std::int64_t kGatheredValues = std::int64_t{1} << 25;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Every process runs the same analysis on the same data, so each call of the factor comes from
+// all of them with the same arguments. Were they to differ (a bug), the processes would part
+// ways, each waiting forever on the others in MUMPS; the arguments' fingerprint is compared at
+// each call instead, and all of them stop with an internal error.
+void check_same_on_every_process(const char* call, const std::array<double, 3>& fingerprint) {
+  std::array<double, 6> local{};
+  for (std::size_t i = 0; i < fingerprint.size(); ++i) {
+    local[i] = fingerprint[i];
+    local[i + 3] = -fingerprint[i];
+  }
+  std::array<double, 6> highest{};
+  MPI_Allreduce(local.data(), highest.data(), 6, MPI_DOUBLE, MPI_MAX, PETSC_COMM_WORLD);
+  for (std::size_t i = 0; i < fingerprint.size(); ++i)
+    if (!(highest[i] == -highest[i + 3]))  // false for a NaN too
+      throw std::logic_error(std::string(call) +
+                             ": the processes of the MPI run asked for different things "
+                             "(their analyses have parted ways)");
 }
 
 // MUMPS's Cholesky (LDL^T where `k` is not flagged positive definite) factor of `k` into
@@ -76,6 +96,8 @@ class MumpsSolver final : public SpdSolver {
     return solve(Eigen::MatrixXd(b)).col(0);
   }
   [[nodiscard]] Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override {
+    check_same_on_every_process("a solve with K",
+                                {static_cast<double>(b.cols()), b.sum(), b.squaredNorm()});
     const auto start = std::chrono::steady_clock::now();
     Eigen::MatrixXd x(b.rows(), b.cols());
     const Eigen::Index group = std::max<Eigen::Index>(
@@ -200,6 +222,16 @@ class DistributedFactor final : public StiffnessFactor {
 SparseMatrix condense_onto_region(const Model& model, const BlockPartition& partition, Mat k,
                                   const SparseMatrix& lower, const std::vector<char>& region) {
   const auto blocks = static_cast<std::size_t>(model.n_blocks());
+  {
+    double count = 0.0;
+    double sum = 0.0;
+    for (std::size_t b = 0; b < region.size(); ++b)
+      if (region[b]) {
+        count += 1.0;
+        sum += static_cast<double>(b);
+      }
+    check_same_on_every_process("a condensation onto a region", {count, sum, 0.0});
+  }
   const auto in = [&](std::int64_t unknown) {
     return region[static_cast<std::size_t>(unknown / kBlock)] != 0;
   };
