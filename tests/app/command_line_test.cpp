@@ -1,6 +1,7 @@
 // The command line itself: --version, -q anywhere, and a command line that cannot be read is
 // bad input (exit 2, as the README promises). Expected: the project's version as CMake defines
 // it, and the exit codes of the README.
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -115,6 +116,45 @@ TEST(CommandLine, ThePetscSolverRunsAStagedCaseOrIsRefusedWhereLeftOut) {
     EXPECT_FALSE(std::filesystem::exists(r.folder / "results"));
   }
   std::filesystem::remove_all(r.folder);
+}
+
+// Started by an MPI launcher without --solver petsc, every process would solve the whole case
+// alone and write the same results: refused before any work, said once (by the first process),
+// for Open MPI's launcher and for those that set PMI_SIZE (MPICH, Slurm). The launch is
+// simulated by its environment.
+TEST(CommandLine, AnMpiStartWithoutThePetscSolverIsRefused) {
+  const std::string staged = std::string(BIMROCK_SOURCE_DIR) + "/examples/pull_out/case.yaml";
+  struct Launch {
+    const char* size;
+    const char* rank;
+    const char* rank_value;
+  };
+  for (const Launch& l :
+       {Launch{"OMPI_COMM_WORLD_SIZE", "OMPI_COMM_WORLD_RANK", "0"},
+        Launch{"PMI_SIZE", "PMI_RANK", "0"}, Launch{"PMI_SIZE", "PMI_RANK", "1"}}) {
+    ::setenv(l.size, "2", 1);
+    ::setenv(l.rank, l.rank_value, 1);
+    for (const std::string& args :
+         {"run '" + staged + "' -o results",
+          std::string("bench --models elastic --elastic-sizes 100 --repetitions 1")}) {
+      const testing::CommandResult r = run_command(args);
+      EXPECT_EQ(r.exit_code, 2) << args;
+      const bool first = std::string(l.rank_value) == "0";
+      EXPECT_EQ(r.err.find("without --solver petsc") != std::string::npos, first) << r.err;
+      EXPECT_FALSE(std::filesystem::exists(r.folder / "results"));
+      EXPECT_EQ(r.out.find("elastic model"), std::string::npos) << r.out;
+      std::filesystem::remove_all(r.folder);
+    }
+    ::unsetenv(l.size);
+    ::unsetenv(l.rank);
+  }
+  // One process of a launch (mpirun -n 1) runs as without it.
+  ::setenv("OMPI_COMM_WORLD_SIZE", "1", 1);
+  const testing::CommandResult one = run_command("run '" + staged + "' -o results -q");
+  ::unsetenv("OMPI_COMM_WORLD_SIZE");
+  EXPECT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_TRUE(std::filesystem::exists(one.folder / "results" / "summary.json"));
+  std::filesystem::remove_all(one.folder);
 }
 
 // The bench's table goes where --json says, its folder made if need be; a file that cannot be

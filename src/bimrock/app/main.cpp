@@ -28,6 +28,7 @@
 
 #include "bimrock/app/bench_command.hpp"
 #include "bimrock/app/mesh_command.hpp"
+#include "bimrock/app/mpi_launch.hpp"
 #include "bimrock/app/openmp_environment.hpp"
 #include "bimrock/app/report.hpp"
 
@@ -242,6 +243,18 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version end here with 0; a command line that cannot be read is bad input.
     return app.exit(e) == 0 ? kOk : kInputError;
+  }
+  // Under an MPI launcher, only the PETSc backend shares the work among the processes.
+  const bool serial_solver =
+      (*run_cmd && solver != "petsc") || (*bench_cmd && bench.solver != "petsc");
+  if (serial_solver && bimrock::launched_processes() > 1) {
+    if (bimrock::launched_rank() == 0)
+      fmt::print(stderr,
+                 "error: started as one of {} processes by an MPI launcher (mpirun) without "
+                 "--solver petsc: each would solve the whole case alone and write the same "
+                 "results; add --solver petsc (docs/parallel.md), or start it without mpirun\n",
+                 bimrock::launched_processes());
+    return kInputError;
   }
   try {
     if (*run_cmd)
