@@ -33,9 +33,8 @@ namespace bimrock {
 /// K of `present` condensed onto `region` by the boundary Schur complement above: S's lower
 /// triangle in the unknowns of the region's blocks in ascending order (6 each), on every
 /// process. `lower` is K's lower triangle (model numbering), `k` the same K distributed.
-[[nodiscard]] SparseMatrix condense_onto_region(const Model& model,
-                                                const BlockPartition& partition, Mat k,
-                                                const SparseMatrix& lower,
+[[nodiscard]] SparseMatrix condense_onto_region(const Model& model, const BlockPartition& partition,
+                                                Mat k, const SparseMatrix& lower,
                                                 const std::vector<char>& region);
 
 }  // namespace bimrock

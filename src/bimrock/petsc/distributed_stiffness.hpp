@@ -45,7 +45,8 @@ struct BlockPartition {
 /// AIJ matrix of block size 6 (a block's six unknowns) on PETSC_COMM_WORLD, preallocated
 /// exactly from the block graph and assembled. Every process calls it; the caller destroys it.
 /// K is that of what stands (`present`: the analysis' stages), or of every block.
-[[nodiscard]] Mat assemble_distributed_stiffness(const Model& model, const BlockPartition& partition,
+[[nodiscard]] Mat assemble_distributed_stiffness(const Model& model,
+                                                 const BlockPartition& partition,
                                                  const Presence& present);
 [[nodiscard]] Mat assemble_distributed_stiffness(const Model& model,
                                                  const BlockPartition& partition);
