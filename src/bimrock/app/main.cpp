@@ -228,7 +228,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   bench_cmd
       ->add_option("--solver", bench.solver,
-                   "cholmod (default), or petsc: the elastic model with PETSc, under mpirun too "
+                   "cholmod (default), or petsc: the models with PETSc, under mpirun too "
                    "(docs/parallel.md)")
       ->check(CLI::IsMember({"cholmod", "petsc"}));
   bench_cmd->add_flag("!--no-limit", bench.limit,
