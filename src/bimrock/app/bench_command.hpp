@@ -16,8 +16,8 @@ struct BenchOptions {
   int increments = 25;  ///< of the plastic model's loading stage
   std::string json;     ///< write the table as JSON here too ("" : no)
   std::string plot;     ///< write bench_time.png/svg and bench_memory.png/svg here ("" : no)
-  /// The elastic model's solver: "cholmod", or "petsc" (the PETSc backend, under mpirun too;
-  /// the elastic model only).
+  /// The solver: "cholmod", or "petsc" (the PETSc backend, under mpirun too: the elastic model
+  /// by multigrid, the plastic ones on K factorized by MUMPS).
   std::string solver = "cholmod";
   /// Measure the physical limit beside each run (false: --no-limit, for models whose CHOLMOD
   /// factor would not fit in memory beside the run's processes).
