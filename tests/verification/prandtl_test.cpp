@@ -146,7 +146,8 @@ CaseSpec footing_case(const Footing& f) {
   c.supports.push_back(testing::roller({w, -d}, {w, 0}));
   c.supports.push_back(testing::fixed({0, -d}, {w, -d}));
   // The pressure c on the footing, scaled by the stage factor: the factor is q / c. The centre
-  // of the footing moves down by 3 cm in 12 steps (the elastic settlement at collapse is ~1.5 cm).
+  // of the footing moves down by 3 cm in f.increments steps (the elastic settlement at collapse
+  // is ~1.5 cm).
   StageSpec load{"footing", {}, f.increments, std::nullopt, {0, "stages[0]"}};
   load.loads.tractions.push_back(testing::pressure_on({0, 0}, {kHalfWidth, 0}, -kCohesion));
   load.control = DisplacementControlSpec{"centre", Vec2(0.0, -1.0), 0.03, {0, "control"}};
