@@ -64,6 +64,10 @@ TEST(DistributedFactor, CondensesARegionAsEliminationDoes) {
     // or more (the check could not pass with S = K_RR).
     EXPECT_GT((s - k_rr).cwiseAbs().maxCoeff(), 1e-8 * expected.cwiseAbs().maxCoeff());
   }
+  // A region of every block has no boundary: S is K.
+  const std::vector<char> all(static_cast<std::size_t>(model.n_blocks()), 1);
+  const SparseMatrix whole = condense_onto_region(model, partition, distributed.get(), lower, all);
+  EXPECT_EQ((Eigen::MatrixXd(full_from_lower(whole)) - k).cwiseAbs().maxCoeff(), 0.0);
 }
 
 TEST(DistributedFactor, SolvesWithKToRoundOff) {

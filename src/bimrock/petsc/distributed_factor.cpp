@@ -263,9 +263,10 @@ SparseMatrix condense_onto_region(const Model& model, const BlockPartition& part
   std::sort(schur.begin(), schur.end());
   const auto nb = static_cast<Eigen::Index>(schur.size());
 
-  // S_BB from K with the interior decoupled, factorized by MUMPS with B last.
+  // S_BB from K with the interior decoupled, factorized by MUMPS with B last (a region without
+  // a boundary, the whole model, is K itself: nothing to factorize).
   Eigen::MatrixXd s_bb(nb, nb);
-  {
+  if (nb > 0) {
     Owned<Mat, MatDestroy> decoupled;
     petsc_call(MatDuplicate(k, MAT_COPY_VALUES, decoupled.out()), "MatDuplicate");
     petsc_call(MatZeroRowsColumns(decoupled.get(), static_cast<PetscInt>(interior.size()),
