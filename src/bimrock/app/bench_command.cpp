@@ -121,6 +121,7 @@ int run_bench_on_petsc([[maybe_unused]] const BenchOptions& options,
                              .first_process = first,
                              .stiffness = distributed_factorization,
                              .stiffness_method = "K by MUMPS",
+                             .processes = petsc.ranks(),
                              .sum_over_processes = [&petsc](double x) { return petsc.sum(x); }};
   const std::vector<Row> rows = run_all(options, scratch, solve, settings);
   if (first)

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <stdexcept>
@@ -182,7 +181,7 @@ Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
     run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
     if (settings.sum_over_processes) {
       run.method = settings.stiffness_method;
-      run.processes = static_cast<int>(std::lround(settings.sum_over_processes(1.0)));
+      run.processes = settings.processes;
       run.all_processes_peak_bytes =
           settings.sum_over_processes(static_cast<double>(peak_memory_bytes()));
     }

@@ -52,8 +52,9 @@ struct RunSettings {
   /// called in the table.
   std::function<StiffnessFactorization(const Model&)> stiffness;
   std::string stiffness_method;
-  /// A value added up over the processes of an MPI run (empty: a serial run), for the peak
-  /// memory of all of them.
+  /// The processes of the run, and a value added up over them (empty: a serial run), for the
+  /// peak memory of all of them.
+  int processes = 1;
   std::function<double(double)> sum_over_processes;
 };
 
