@@ -19,13 +19,15 @@ constexpr double kCollapse = 0.6137;  // F: the stand-in structure's collapse fa
 // A stand-in structure: its state is the stage factor carried, and `answer` decides each trial.
 struct Structure {
   double factor = 0.0;
-  std::vector<double> tried{};    // the steps tried, in order
-  std::vector<double> carried{};  // the factor after each carried part
+  std::vector<double> tried{};        // the steps tried, in order
+  std::vector<double> carried{};      // the factor after each carried part
+  std::vector<Thoroughness> asked{};  // how thoroughly each trial was to be solved
   std::function<Trial(double from, double step)> answer{};
 
   SteppedIncrement step(double step, const SteppingOptions& options = {}) {
-    const TryStep try_step = [&](double s) {
+    const TryStep try_step = [&](double s, Thoroughness thoroughness) {
       tried.push_back(s);
+      asked.push_back(thoroughness);
       return answer(factor, s);
     };
     const CarryStep carry = [&](const Trial& t) {
@@ -103,6 +105,27 @@ TEST(LoadStepping, AimsAtACertificatesBoundAndNeedsFewerTrialsThanHalving) {
   halving.factor = 0.5;
   (void)halving.step(0.25);
   EXPECT_LT(proving.tried.size(), halving.tried.size());
+}
+
+TEST(LoadStepping, OnlyTheTrialsInsideAProvenBracketAreQuick) {
+  // The first trial fails with a proof: every later one lies between a load carried and one
+  // proven to fail, where an undecided answer moves neither end.
+  Structure s{.answer = up_to_collapse};
+  s.factor = 0.5;
+  ASSERT_EQ(s.step(0.25).outcome, SteppedIncrement::Outcome::collapse);
+  ASSERT_GE(s.asked.size(), 3u);
+  EXPECT_EQ(s.asked.front(), Thoroughness::thorough);
+  for (std::size_t i = 1; i < s.asked.size(); ++i)
+    EXPECT_EQ(s.asked[i], Thoroughness::quick) << "trial " << i;
+
+  // Without a proof, a failed trial bounds nothing: every cut is tried thoroughly.
+  Structure unproven{.answer = [](double from, double step) {
+    return step > 0.1 + 1e-15 ? failed() : up_to_collapse(from, step);
+  }};
+  (void)unproven.step(0.25);
+  ASSERT_GE(unproven.asked.size(), 3u);
+  for (const Thoroughness t : unproven.asked)
+    EXPECT_EQ(t, Thoroughness::thorough);
 }
 
 TEST(LoadStepping, ANumericalFailureIsCutAndTheRestCarriedNotTakenForACollapse) {

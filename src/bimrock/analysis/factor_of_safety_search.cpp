@@ -41,11 +41,11 @@ FactorOfSafety find_factor_of_safety(const Model& model, const std::vector<Yield
   };
   out.trials.push_back({1.0, 0.0, monitors(start.u)});
   std::optional<Trial> last;
-  const TryStep try_step = [&](double step) {
+  const TryStep try_step = [&](double step, Thoroughness thoroughness) {
     const Model reduced = reduce_strength(model, selection, state.stage_factor + step);
     const YieldEvaluator yield(reduced, points, present);
     const StageContext ctx{reduced, points, k, reduction, yield, no_load, {}, 0.0, &timings};
-    return solve_increment(ctx, state, step, options, tuning, solver, memory);
+    return solve_increment(ctx, state, step, options, tuning, solver, memory, thoroughness);
   };
   const CarryStep carry = [&](const Trial& t) {
     state = t.next;

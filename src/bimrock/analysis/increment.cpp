@@ -110,7 +110,7 @@ IncrementLcp round_lcp(const StageContext& ctx, const YieldSystem& sys, const An
   const bool control = ctx.stage.control.has_value();
   const Eigen::VectorXd cx = sys.c * ctx.x_ref;
   const double load = control ? step / ctx.control_rate : step;
-  IncrementLcp lcp{sys, ctx.points, -sys.f0 - cx * load, {}, {}, nullptr, {}, {}};
+  IncrementLcp lcp{sys, ctx.points, -sys.f0 - cx * load, {}, {}, nullptr, {}, {}, nullptr};
   if (control) {
     lcp.control = &ctx.control;
     lcp.control_term = cx / ctx.control_rate;
@@ -222,7 +222,7 @@ Prediction predict(const StageContext& ctx, const AnalysisState& s, double step,
 
 Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double step,
                       const PlasticOptions& options, const CandidateTuning& tuning,
-                      IncrementSolver& solver, IncrementMemory& memory) {
+                      IncrementSolver& solver, IncrementMemory& memory, Thoroughness thoroughness) {
   Trial t;
   LapTimer clock(ctx.timings);
   const Prediction p = predict(ctx, s, step, options.yield_tolerance);
@@ -248,17 +248,49 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
     clock.lap("increments: yield rows");
     t.lcp_size = sys.size();
     // Solve the increment's LCP.
-    const IncrementLcp lcp = round_lcp(ctx, sys, s, step, warm_rows);
+    IncrementLcp lcp = round_lcp(ctx, sys, s, step, warm_rows);
+    // Non-associated flow under load control: the symmetric part of the splitting that finds
+    // the active set (solve/symmetric_splitting.hpp).
+    const bool non_associated =
+        !ctx.stage.control && sys.size() > 0 && !follows_associated_flow(sys);
+    std::optional<YieldSystem> along_flow;
+    if (non_associated) {
+      along_flow = assemble_yield_system(ctx.model, ctx.points, s.points, s.u,
+                                         candidates.in_lcp(solver), FlowRule::gradient_along_flow);
+      lcp.along_flow = &*along_flow;
+    }
     Eigen::VectorXd z = lcp.gap_old;
     if (sys.size() > 0) {
       IterateCheck check{
           ctx, s, sys, lcp, candidates, solver, step, tol, solver.tuning().interrupt_after, {}, {}};
       const IncrementSolver::Interrupt interrupt = std::ref(check);
-      const IncrementSolution solution = solver.solve(lcp, &interrupt, candidates.around());
+      const IncrementSolution solution =
+          solver.solve(lcp, &interrupt, candidates.around(), thoroughness);
       on_tangent = tally(solution, t);
       clock.lap("increments: LCP", "increments: K^-1 Phi columns", solution.columns_seconds);
       using Outcome = IncrementSolution::Outcome;
+      // Non-associated flow: no flow rule carries what associated flow cannot. Tried wherever
+      // the solve did not end (the associated increment costs what a round of associated flow
+      // does), before the next round's dense routes: past the associated limit load that proof
+      // is the answer, and what the dense routes find there is a round that fails anyway.
+      const auto associated_proof = [&]() -> std::optional<AssociatedBound> {
+        if (!non_associated)
+          return std::nullopt;
+        AssociatedBound bound =
+            associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver);
+        tally(bound.associated, t);
+        clock.lap("increments: LCP", "increments: K^-1 Phi columns",
+                  bound.associated.columns_seconds);
+        if (!bound.proven())
+          return std::nullopt;
+        return bound;
+      };
       if (solution.outcome == Outcome::interrupted) {
+        if (std::optional<AssociatedBound> bound = associated_proof()) {
+          t.proven_fraction = bound->proven_fraction;
+          t.du = std::move(bound->du);
+          return collapse(sys, bound->ray, ctx, std::move(t));
+        }
         // The next round holds the points the iterate violates, or goes on without the points
         // around the flow where it stalled on them.
         ++memory.interrupted_rounds;
@@ -275,16 +307,10 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
         return collapse(sys, solution.ray, ctx, std::move(t));
       }
       if (solution.outcome == Outcome::undecided) {
-        // Non-associated flow: no flow rule carries what associated flow cannot.
-        AssociatedBound bound =
-            associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver);
-        tally(bound.associated, t);
-        clock.lap("increments: LCP", "increments: K^-1 Phi columns",
-                  bound.associated.columns_seconds);
-        if (bound.proven()) {
-          t.proven_fraction = bound.proven_fraction;
-          t.du = std::move(bound.du);
-          return collapse(sys, bound.ray, ctx, std::move(t));
+        if (std::optional<AssociatedBound> bound = associated_proof()) {
+          t.proven_fraction = bound->proven_fraction;
+          t.du = std::move(bound->du);
+          return collapse(sys, bound->ray, ctx, std::move(t));
         }
         return t;  // failed: the caller cuts the step
       }

@@ -63,8 +63,10 @@ struct Trial {
 
 /// One increment from state s: `step` is the increment of the stage factor (load control) or of
 /// the prescribed displacement (displacement control).
+/// `thoroughness`: how far its LCPs' solves go (Thoroughness).
 Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double step,
                       const PlasticOptions& options, const CandidateTuning& tuning,
-                      IncrementSolver& solver, IncrementMemory& memory);
+                      IncrementSolver& solver, IncrementMemory& memory,
+                      Thoroughness thoroughness = Thoroughness::thorough);
 
 }  // namespace bimrock

@@ -27,19 +27,19 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
     out.carried = t.next.stage_factor;
     carried_any = true;
   };
-  Trial t = try_step(step);
+  Trial t = try_step(step, Thoroughness::thorough);
   // A softening law that reaches its residual value inside the step: carry the step to there,
   // then the rest as a further step (the laws are linear on each side of the kink).
   double rest = step;
   for (int cuts = 0; cuts < kMostKinks && t.status == Trial::Status::carried && t.kink < 1.0;
        ++cuts) {
-    const Trial to_kink = try_step(t.kink * rest);
+    const Trial to_kink = try_step(t.kink * rest, Thoroughness::thorough);
     if (to_kink.status != Trial::Status::carried)
       break;
     const double done = to_kink.next.stage_factor - out.carried;
     keep(to_kink);
     rest = options.displacement_control ? rest * (1.0 - t.kink) : rest - done;
-    t = try_step(rest);
+    t = try_step(rest, Thoroughness::thorough);
   }
   if (t.status == Trial::Status::carried) {
     keep(t);
@@ -70,7 +70,10 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
       break;
     const double trial = retry ? remaining : (aim ? kAimAtBound : 0.5) * failing_step;
     retry = false;
-    const Trial part = try_step(trial);
+    // Inside a proven bracket a trial that stays undecided moves neither end: the pivoting
+    // methods' search on a large LCP (seconds, where the active-set method takes milliseconds)
+    // is left out there.
+    const Trial part = try_step(trial, proven ? Thoroughness::quick : Thoroughness::thorough);
     if (part.status == Trial::Status::carried) {
       keep(part);
       remaining = trial == remaining ? 0.0 : remaining - trial;

@@ -37,8 +37,9 @@ struct SteppedIncrement {
   bool undecided_inside = false;
 };
 
-/// Tries a step from the state carried so far.
-using TryStep = std::function<Trial(double step)>;
+/// Tries a step from the state carried so far, its LCPs solved as thoroughly as asked: inside a
+/// bracket already proven, a trial that stays undecided moves no bound, and is tried quick.
+using TryStep = std::function<Trial(double step, Thoroughness thoroughness)>;
 /// Carries a trial: its state becomes the one the next step starts from.
 using CarryStep = std::function<void(const Trial&)>;
 

@@ -152,10 +152,11 @@ bool carry_pretension(const Model& model, int st, StageStructure& structure,
       on_increment(result.history.back(), result.state);
     part_start = std::chrono::steady_clock::now();
   };
-  const TryStep try_step = [&](double step) {
+  const TryStep try_step = [&](double step, Thoroughness thoroughness) {
     AnalysisState from = result.state;
     from.stage_factor = jacked;
-    return solve_increment(ctx, from, step, options, tuning, structure.solver(), memory);
+    return solve_increment(ctx, from, step, options, tuning, structure.solver(), memory,
+                           thoroughness);
   };
   const SteppedIncrement done = step_increment(
       1.0, 0.0, try_step, carry, {options.bracket_tolerance, options.max_bisections, false, false});
@@ -235,8 +236,9 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
       last = carried;
       part_start = std::chrono::steady_clock::now();
     };
-    const TryStep try_step = [&](double s) {
-      return solve_increment(ctx, result.state, s, options, tuning, structure.solver(), memory);
+    const TryStep try_step = [&](double s, Thoroughness thoroughness) {
+      return solve_increment(ctx, result.state, s, options, tuning, structure.solver(), memory,
+                             thoroughness);
     };
     const SteppingOptions stepping{options.bracket_tolerance, options.max_bisections,
                                    stage.control.has_value(), false};

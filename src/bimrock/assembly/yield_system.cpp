@@ -18,6 +18,8 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
     LocalYield y = linearize(model, point, states[p], stress);
     if (flow == FlowRule::associated)
       y.g = y.a;
+    else if (flow == FlowRule::gradient_along_flow)
+      y.a = y.g;
     const double w = point.weight;
     const Eigen::MatrixXd a_d_e = w * y.a * d * op.e;  // scaled C rows, local columns
     const Eigen::MatrixXd e_d_g = w * op.e.transpose() * d * y.g.transpose();  // Phi columns

@@ -29,10 +29,12 @@ struct YieldSystem {
   [[nodiscard]] int size() const { return static_cast<int>(rows.size()); }
 };
 
-/// The flow rule the rows' Phi and N follow: the model's (its dilation angles), or the
-/// associated one (flow along each yield function's gradient), whose collapse loads bound those
-/// of every other flow rule from above (analysis/associated_bound.hpp).
-enum class FlowRule { as_modelled, associated };
+/// The flow rule the rows follow: the model's (its dilation angles); the associated one (flow
+/// along each yield function's gradient), whose collapse loads bound those of every other flow
+/// rule from above (analysis/associated_bound.hpp); or the model's flow with each yield
+/// function's gradient turned along it (f0 kept; C = Phi^T and N symmetric), the symmetric part
+/// of the splitting of a non-associated LCP (solve/symmetric_splitting.hpp).
+enum class FlowRule { as_modelled, associated, gradient_along_flow };
 
 /// Builds the yield rows of every mode of the given yield points at their current state.
 /// @param candidates indices into `points`

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include <bimrock/solve/fischer_burmeister_newton.hpp>
+#include <bimrock/solve/symmetric_splitting.hpp>
 #include <bimrock/solve/unsymmetric_tangent.hpp>
 #include <bimrock/solve/working_set_lcp.hpp>
 
@@ -102,6 +103,38 @@ class LcpOnZone final : public LcpColumns {
   mutable std::optional<bool> symmetric_;
 };
 
+// The splitting (symmetric_splitting.hpp) of a non-associated LCP on the reduced tangent:
+// M = M~ + E, M~ the LCP of the rows along the flow, solved by the symmetric route (Cholesky, the
+// kept factor's updates). The flow's columns S^-1 Phi are the same in both. Nothing where M~ is
+// not symmetric either (a softening law whose coupling of the modes is not).
+std::optional<SplittingResult> splitting_on_tangent(
+    const YieldSystem& along_flow, LcpOnZone& on_zone, const std::vector<YieldPoint>& points,
+    FlexibilityColumns& columns, const CondensedStiffness& stiffness, TangentFactor& tangent,
+    ActiveSetLcp& active_set, const ActiveSetProposal& propose, const Eigen::VectorXd& start,
+    const Eigen::VectorXd* warm, IncrementSolution& out) {
+  const Eigen::Index m = on_zone.size();
+  LcpOnZone symmetric_part(along_flow, points, columns, Eigen::VectorXd::Zero(m), {}, nullptr, {});
+  if (!symmetric_part.symmetric())
+    return std::nullopt;
+  const SplittingRemainder remainder = [&](const Eigen::VectorXd& z) {
+    return Eigen::VectorXd(on_zone.times(z) - symmetric_part.times(z));
+  };
+  const SymmetricLcpSolve solve = [&](const Eigen::VectorXd& q, const Eigen::VectorXd* active) {
+    LcpOnZone inner(along_flow, points, columns, q, {}, nullptr, {});
+    const SplitLcp split = inner.split(stiffness.lower());
+    ReducedTangentEquations equations(split, stiffness.factor(), tangent);
+    LcpResult r = active_set.solve(equations, active, nullptr);
+    out.active_set_iterations += r.steps;
+    out.tangent_factorizations += equations.factorizations();
+    return r;
+  };
+  return solve_by_splitting(on_zone.q(), remainder, solve, propose, start, warm);
+}
+
+/// Steps of the active-set method that try an active set the splitting proposes: one solves the
+/// proposal's equations, two more let the few rows it missed settle.
+constexpr int kProposalSteps = 3;
+
 bool decided(const LcpResult& r) {
   return r.status == LcpStatus::solved || r.status == LcpStatus::no_solution;
 }
@@ -113,10 +146,12 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
     : tuning_(tuning),
       zones_(model, k, k_lower, tuning.zones),
       active_set_(ActiveSetOptions{.max_iterations = tuning.active_set_iterations,
-                                   .interrupt_after = tuning.interrupt_after}) {}
+                                   .interrupt_after = tuning.interrupt_after}),
+      proposal_check_(
+          ActiveSetOptions{.max_iterations = kProposalSteps, .murty_after_cycle = false}) {}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
-                                         bool stop_unsolved) {
+                                         bool stop_unsolved, Thoroughness thoroughness) {
   using Outcome = IncrementSolution::Outcome;
   IncrementSolution out;
   const CondensedStiffness& stiffness = zones_.stiffness();
@@ -154,25 +189,58 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     const SplitLcp split = on_zone.split(stiffness.lower());
     // Symmetric (associated flow): Cholesky, with the kept factor's updates; else LU.
     std::unique_ptr<ActiveSetEquations> equations;
-    if (on_zone.symmetric())
+    Eigen::VectorXd proposed;  // non-associated flow: the splitting's last active set
+    if (on_zone.symmetric()) {
       equations =
           std::make_unique<ReducedTangentEquations>(split, stiffness.factor(), zones_.tangent());
-    else
+    } else {
       equations = std::make_unique<UnsymmetricTangentEquations>(split, stiffness.factor());
+      if (lcp.along_flow) {
+        // The splitting proposes active sets, each tried by a step or two of the active-set
+        // method on the LCP itself.
+        const ActiveSetProposal propose = [&](const Eigen::VectorXd& active) {
+          LcpResult tried = proposal_check_.solve(*equations, &active, nullptr);
+          out.active_set_iterations += tried.steps;
+          if (tried.status != LcpStatus::solved)
+            return false;
+          r = std::move(tried);
+          return true;
+        };
+        const std::optional<SplittingResult> splitting = splitting_on_tangent(
+            stiffness.local(*lcp.along_flow), on_zone, lcp.points, columns, stiffness,
+            zones_.tangent(), active_set_, propose, lcp.gap_old, warm, out);
+        out.tangent_factorizations += equations->factorizations();
+        if (splitting && splitting->solved)
+          return finish(Outcome::solved, r);
+        // Where no proposal solved it, the block rule seldom converges on a non-symmetric LCP
+        // this large, and each of its steps costs a factorization: a quick solve ends here.
+        if (splitting && thoroughness == Thoroughness::quick)
+          return finish(Outcome::undecided, r);
+        if (splitting && splitting->proposals > 0) {
+          proposed = (splitting->z.array() > 0.0).cast<double>();
+          warm = &proposed;  // the block rule goes on from the last proposal's neighbourhood
+        }
+      }
+    }
+    const int factorizations_before = equations->factorizations();
     r = active_set_.solve(*equations, warm, interrupt);
     out.active_set_iterations += r.steps;
-    out.tangent_factorizations += equations->factorizations();
+    out.tangent_factorizations += equations->factorizations() - factorizations_before;
     const bool unsolved = r.z.size() == m && (r.status == LcpStatus::iteration_limit ||
                                               r.status == LcpStatus::numerical_failure);
     if (r.status == LcpStatus::interrupted || (stop_unsolved && unsolved))
       return finish(Outcome::interrupted, r);
-    if (!decided(r) && m > tuning_.dense_fallback_rows)
+    const int dense_rows = thoroughness == Thoroughness::thorough ? tuning_.dense_fallback_rows
+                                                                  : tuning_.reduced_tangent_rows;
+    if (!decided(r) && m > dense_rows)
       return finish(Outcome::undecided, r);  // too large for the dense routes
   }
   if (tuning_.active_set && !decided(r)) {
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
   }
+  if (!decided(r) && thoroughness == Thoroughness::quick && m > tuning_.reduced_tangent_rows)
+    return finish(Outcome::undecided, r);  // no pivoting on a large LCP
   // Under displacement control, where the semismooth Newton method below would start: the
   // active-set method's iterate (kept only there, Lemke replaces r).
   Eigen::VectorXd iterate;

@@ -65,6 +65,14 @@ struct IncrementSolution {
   double columns_seconds = 0.0;  ///< of the time, forming columns K^-1 phi
 };
 
+/// How far a solve goes where its fast routes leave an LCP undecided. Thorough: on to the
+/// block rule from the warm start, then the dense routes (the dense active block, Lemke, branch
+/// and bound) up to SolverTuning::dense_fallback_rows rows. Quick: a non-associated LCP whose
+/// splitting finds no solution ends there, and the dense routes take only LCPs of up to
+/// reduced_tangent_rows rows, where they cost no more than the tangent route. Quick serves the
+/// trials whose undecided answer bounds nothing: those inside a collapse bracket already proven.
+enum class Thoroughness { thorough, quick };
+
 class IncrementSolver {
  public:
   /// The iterate of the active-set method on the reduced tangent (z in the LCP's rows); true
@@ -86,7 +94,8 @@ class IncrementSolver {
   /// (at the iteration limit, or where no step lowers the objective) is returned as interrupted
   /// instead of going on with the dense routes.
   [[nodiscard]] IncrementSolution solve(const IncrementLcp& lcp, const Interrupt* interrupt,
-                                        bool stop_unsolved);
+                                        bool stop_unsolved,
+                                        Thoroughness thoroughness = Thoroughness::thorough);
 
   [[nodiscard]] const SolverTuning& tuning() const { return tuning_; }
   [[nodiscard]] ZoneStatistics zone_statistics() const { return zones_.statistics(); }
@@ -95,6 +104,7 @@ class IncrementSolver {
   SolverTuning tuning_;
   StiffnessZones zones_;
   ActiveSetLcp active_set_;
+  ActiveSetLcp proposal_check_;  // tries the active sets the splitting proposes
   Lemke lemke_;
   BranchAndBoundLcp complete_;
 };

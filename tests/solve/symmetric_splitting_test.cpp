@@ -1,0 +1,123 @@
+// The splitting method (solve/symmetric_splitting.hpp). Expected answers: planted solutions (q
+// built from a chosen complementary z*, w* of a P-matrix M, so the solution is unique), and a
+// one-row problem whose iterates are worked by hand.
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include <bimrock/solve/lemke.hpp>
+#include <bimrock/solve/symmetric_splitting.hpp>
+
+#include "solve/random_lcp.hpp"
+
+namespace bimrock {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+// The splitting of (q, B + E), each inner LCP solved by Lemke on the dense B, each proposal
+// tried by solving M_AA z_A = -q_A and checking z_A >= 0, w >= 0 (kept in `solution`).
+struct Split {
+  MatrixXd b, e;
+  VectorXd q;
+  VectorXd solution{};
+  int inner_solves = 0;
+
+  SplittingResult run(const SplittingOptions& options = {}) {
+    const SplittingRemainder remainder = [&](const VectorXd& z) { return VectorXd(e * z); };
+    const SymmetricLcpSolve solve = [&](const VectorXd& shifted, const VectorXd* /*warm*/) {
+      ++inner_solves;
+      return Lemke{}.solve({b, shifted});
+    };
+    const ActiveSetProposal propose = [&](const VectorXd& active) {
+      const MatrixXd m = b + e;
+      std::vector<Eigen::Index> rows;
+      for (Eigen::Index i = 0; i < q.size(); ++i)
+        if (active(i) > 0.0)
+          rows.push_back(i);
+      VectorXd z = VectorXd::Zero(q.size());
+      if (!rows.empty()) {
+        const auto k = static_cast<Eigen::Index>(rows.size());
+        MatrixXd m_aa(k, k);
+        VectorXd q_a(k);
+        const auto row = [&](Eigen::Index i) { return rows[static_cast<std::size_t>(i)]; };
+        for (Eigen::Index i = 0; i < k; ++i) {
+          q_a(i) = q(row(i));
+          for (Eigen::Index j = 0; j < k; ++j)
+            m_aa(i, j) = m(row(i), row(j));
+        }
+        const VectorXd z_a = m_aa.partialPivLu().solve(-q_a);
+        for (Eigen::Index i = 0; i < k; ++i)
+          z(row(i)) = z_a(i);
+      }
+      const VectorXd w = m * z + q;
+      const double tol = 1e-10 * (q.cwiseAbs().maxCoeff() + 1.0);
+      if (z.minCoeff() < -tol || w.minCoeff() < -tol)
+        return false;
+      solution = z;
+      return true;
+    };
+    return solve_by_splitting(q, remainder, solve, propose, VectorXd::Zero(q.size()), nullptr,
+                              options);
+  }
+};
+
+TEST(SymmetricSplitting, FindsThePlantedSolutionOfAWeaklyNonSymmetricLcp) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    std::mt19937 rng(seed);
+    const Eigen::Index n = 40;
+    Split s;
+    s.b = testing::random_spd(n, rng);
+    // E small against B's least eigenvalue: M = B + E stays positive definite (a P-matrix).
+    const double least = Eigen::SelfAdjointEigenSolver<MatrixXd>(s.b).eigenvalues()(0);
+    s.e = MatrixXd::Random(n, n);
+    s.e *= 0.3 * least / s.e.norm();
+    VectorXd z_star = VectorXd::Zero(n), w_star = VectorXd::Zero(n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      (i % 3 == 0 ? z_star(i) : w_star(i)) = 1.0 + 0.1 * static_cast<double>(i);
+    s.q = testing::planted_q(s.b + s.e, z_star, w_star);
+    const SplittingResult r = s.run();
+    ASSERT_TRUE(r.solved) << seed;
+    EXPECT_LE((s.solution - z_star).cwiseAbs().maxCoeff(), 1e-9) << seed;
+    EXPECT_GE(r.proposals, 1) << seed;
+    EXPECT_LT(r.iterations, SplittingOptions{}.max_iterations) << seed;
+  }
+}
+
+TEST(SymmetricSplitting, DampsIteratesThatSwapRowsBackAndForth) {
+  // One row: B = 1, E = 1.5, q = -1, so M = 2.5 and z* = 0.4. Undamped, z_k+1 = max(0, 1 - 1.5
+  // z_k) from 0 gives 1, 0, 1, 0, ...: the active set alternates and is never proposed. Halving
+  // the step maps the iteration's factor -1.5 to 1 - 0.5 - 0.75 = -0.25: the iterates settle on
+  // z > 0, which is proposed and solves the LCP.
+  Split s{.b = MatrixXd::Constant(1, 1, 1.0),
+          .e = MatrixXd::Constant(1, 1, 1.5),
+          .q = VectorXd::Constant(1, -1.0)};
+  const SplittingResult damped = s.run();
+  ASSERT_TRUE(damped.solved);
+  EXPECT_NEAR(s.solution(0), 0.4, 1e-14);
+
+  Split undamped = s;
+  undamped.solution = VectorXd();
+  const SplittingResult r = undamped.run({.least_relaxation = 1.0});
+  EXPECT_FALSE(r.solved);
+  EXPECT_EQ(r.proposals, 0);
+  EXPECT_EQ(r.iterations, SplittingOptions{}.max_iterations);
+}
+
+TEST(SymmetricSplitting, SaysSoWhereAnInnerLcpHasNoSolution) {
+  // B = 0 with q < 0: the first inner LCP (q, B) has none, whatever M is.
+  Split s{
+      .b = MatrixXd::Zero(2, 2), .e = MatrixXd::Identity(2, 2), .q = VectorXd::Constant(2, -1.0)};
+  const SplittingResult r = s.run();
+  EXPECT_FALSE(r.solved);
+  EXPECT_EQ(r.z.size(), 0);
+  EXPECT_EQ(r.iterations, 0);
+  EXPECT_EQ(s.inner_solves, 1);
+}
+
+}  // namespace
+}  // namespace bimrock
