@@ -132,8 +132,8 @@ std::optional<SplittingResult> splitting_on_tangent(
 }
 
 /// Steps of the active-set method that try an active set the splitting proposes: one solves the
-/// proposal's equations, two more let the few rows it missed settle.
-constexpr int kProposalSteps = 3;
+/// proposal's equations, one more lets a row or two that it missed settle.
+constexpr int kProposalSteps = 2;
 
 bool decided(const LcpResult& r) {
   return r.status == LcpStatus::solved || r.status == LcpStatus::no_solution;

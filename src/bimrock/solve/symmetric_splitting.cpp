@@ -27,8 +27,8 @@ SplittingResult solve_by_splitting(const Eigen::VectorXd& q, const SplittingRema
     const Eigen::VectorXd now = (inner.z.array() > 0.0).cast<double>();
     const auto changed = static_cast<Eigen::Index>((now - active).cwiseAbs().sum());
     active = now;
-    if (k > 0 && static_cast<double>(changed) <= options.proposal_changes * active.sum() &&
-        (proposed.size() != n || active != proposed)) {
+    // The active set {i : z_i > 0} held from the last iterate: a proposal (each set once).
+    if (k > 0 && changed == 0 && (proposed.size() != n || active != proposed)) {
       proposed = active;
       ++out.proposals;
       if (propose(active)) {

@@ -11,11 +11,13 @@
 /// routes solve fast, warm-started from the last.
 ///
 /// The iterates converge only linearly, and not at all where the left-out part couples strongly
-/// to the flow (near a limit load). So they serve as proposals: once an iterate's active set
-/// differs from the last one's in few rows, the caller tries it on the non-symmetric LCP itself
-/// (the active-set method from there, a step or two, checked), and the first one that solves it
-/// ends the iteration. Iterates that swap rows back and forth are damped. Where an inner LCP has
-/// no solution or no proposal solves the LCP, the method proves nothing.
+/// to the flow (near a limit load). So they serve as proposals: once an iterate keeps the last
+/// one's active set, the caller tries that set on the non-symmetric LCP itself (the active-set
+/// method from there, a step or two, checked), and the first one that solves it ends the
+/// iteration. Iterates that swap rows back and forth are damped. Where an inner LCP has no
+/// solution (near a limit load the frozen part of the yield functions, e.g. the normal stresses
+/// a joint's friction acts on, can leave too little strength for the step) or no proposal solves
+/// the LCP, the method proves nothing.
 #include <functional>
 
 #include <Eigen/Core>
@@ -26,9 +28,6 @@ namespace bimrock {
 
 struct SplittingOptions {
   int max_iterations = 40;
-  /// An iterate's active set {i : z_i > 0} is tried on the LCP once it differs from the last
-  /// iterate's in no more than this fraction of its rows (and in any case once it holds).
-  double proposal_changes = 0.005;
   /// Where this many iterates in a row change no fewer rows of the active set than the least so
   /// far, the next ones move only half as far towards their inner solutions as before, down to
   /// least_relaxation (a relaxed splitting, z_k+1 = z_k + omega (z^ - z_k)).
