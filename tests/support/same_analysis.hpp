@@ -14,11 +14,13 @@ namespace bimrock::testing {
 
 /// The abutment model of `bimrock bench` asked for `blocks` blocks (100 gives 283: the mass is at
 /// least 8 m wide; 300 gives 486), loaded to collapse: a jointed mass, Mohr-Coulomb joints with
-/// associated flow, a thrust on a strip.
+/// associated flow (or none of dilation), a thrust on a strip.
 inline PlasticResult run_abutment(const PlasticTuning& tuning, int blocks = 100,
-                                  const PlasticOptions& options = {}) {
+                                  const PlasticOptions& options = {},
+                                  JointFlow flow = JointFlow::associated) {
   return run_plastic_analysis(
-      build_model(abutment_case(blocks, 25, 1.2 * abutment_collapse_shear())), options, {}, tuning);
+      build_model(abutment_case(blocks, 25, 1.2 * abutment_collapse_shear(), flow)), options, {},
+      tuning);
 }
 
 inline void expect_same_analysis(const PlasticResult& a, const PlasticResult& b) {

@@ -195,7 +195,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
           std::make_unique<ReducedTangentEquations>(split, stiffness.factor(), zones_.tangent());
     } else {
       equations = std::make_unique<UnsymmetricTangentEquations>(split, stiffness.factor());
-      if (lcp.along_flow) {
+      if (lcp.along_flow && tuning_.splitting) {
         // The splitting proposes active sets, each tried by a step or two of the active-set
         // method on the LCP itself.
         const ActiveSetProposal propose = [&](const Eigen::VectorXd& active) {

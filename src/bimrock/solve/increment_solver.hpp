@@ -40,6 +40,9 @@ struct SolverTuning {
   /// On the reduced tangent, after this many steps of projected Newton each iterate is shown to
   /// the caller's interrupt (0: never).
   int interrupt_after = 3;
+  /// A non-associated LCP on the reduced tangent is first split into associated ones, whose
+  /// active sets are tried on it (symmetric_splitting.hpp); false: the block rule alone.
+  bool splitting = true;
   ZoneTuning zones{};
 };
 
