@@ -128,6 +128,53 @@ TEST(LoadStepping, OnlyTheTrialsInsideAProvenBracketAreQuick) {
     EXPECT_EQ(t, Thoroughness::thorough);
 }
 
+TEST(LoadStepping, WhereOnlySmallStepsCarryThePartsGrowAndReachTheCollapse) {
+  // Steps above 0.01 fail numerically (as near a limit load): from 0.5, the first part carried
+  // is 0.25 / 32. Trying the whole rest again before each part would cost five bisections a
+  // part, and the 40 allowed would end undecided at about 0.56. Parts that grow from the last
+  // cost one each, and the increment reaches F, where the collapse is proven and bracketed.
+  Structure s{.answer = [](double from, double step) {
+    return step > 0.01 + 1e-15 ? failed() : up_to_collapse(from, step);
+  }};
+  s.factor = 0.5;
+  const SteppedIncrement out = s.step(0.25);
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_LE(out.carried, kCollapse);
+  EXPECT_GT(out.failed, kCollapse);
+  EXPECT_LE(out.failed - out.carried, 1e-4 * out.failed);
+  EXPECT_LE(s.tried.size(), 4u * 40u);
+}
+
+TEST(LoadStepping, CutsLeftUndecidedLookForAProofUpToTheStagesEnd) {
+  // Past F no step is solved, and none is proven to fail before it reaches U = 0.8 (as between
+  // the limit loads of non-associated flow and of associated flow): a step beyond U is proven
+  // to fail from U on.
+  constexpr double kProvenAbove = 0.8;
+  const auto answer = [](double from, double step) {
+    const double reach = from + step;
+    if (reach <= kCollapse)
+      return carried_to(reach);
+    if (reach <= kProvenAbove)
+      return failed();
+    return collapsed((kProvenAbove - from) / step);
+  };
+  Structure s{.answer = answer};
+  s.factor = 0.5;
+  const SteppedIncrement out = s.step(0.25, {.stage_end = 1.0});
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_TRUE(out.undecided_inside);
+  EXPECT_LE(out.carried, kCollapse);
+  EXPECT_GT(out.carried, 0.999 * kCollapse);  // the cuts' budget spent carrying towards F
+  EXPECT_NEAR(out.failed, kProvenAbove, 1e-12);
+  EXPECT_EQ(s.asked.back(), Thoroughness::quick);  // the trial to the stage's end
+  EXPECT_NEAR(s.tried.back(), 1.0 - out.carried, 1e-15);
+
+  // Without the stage's end, the same cuts stop undecided.
+  Structure alone{.answer = answer};
+  alone.factor = 0.5;
+  EXPECT_EQ(alone.step(0.25).outcome, SteppedIncrement::Outcome::undecided);
+}
+
 TEST(LoadStepping, ANumericalFailureIsCutAndTheRestCarriedNotTakenForACollapse) {
   // Steps longer than 0.1 fail numerically; everything below F carries.
   Structure s{.answer = [](double from, double step) {

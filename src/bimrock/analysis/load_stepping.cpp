@@ -14,6 +14,10 @@ constexpr double kAimAtBound = 0.9;
 constexpr int kMostKinks = 100;
 /// Undecided trials once a failure is proven: then the bracket stands (see below).
 constexpr int kUndecidedInBracket = 3;
+/// After a numerical failure, the parts carried grow by this factor each.
+constexpr double kGrowth = 2.0;
+/// Trials of one increment, carried or not, at most this many per bisection allowed.
+constexpr int kTrialsPerBisection = 4;
 
 }  // namespace
 
@@ -51,7 +55,9 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   double failing_step = rest;    // from the state: proven to fail, or the last that failed
   std::optional<double> proven;  // stage factor of the nearest proof
   bool aim = false;              // aim at the certificate's bound
-  bool retry = false;            // a numerical failure, then a carried part: try the rest again
+  bool retry = false;            // a numerical failure, then a carried part: try on
+  bool growing = false;          // the rest, tried again, failed: the parts grow instead
+  double part_carried = 0.0;     // the last part carried after a numerical failure
   int undecided = 0;             // trials neither carried nor proven to fail, once one was
   if (t.status == Trial::Status::collapse) {
     failing_step *= t.proven_fraction;
@@ -64,11 +70,25 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   const auto unstable_at_start = [&] {
     return options.first_load && !carried_any && proven && *proven <= options.bracket_tolerance;
   };
-  for (int b = 0; b < options.max_bisections && remaining > 0.0 && !unstable_at_start(); ++b) {
+  // Each trial that fails is a bisection; parts carried are progress, and count against the
+  // bisections only as a bound on the trials.
+  int cuts = 0;
+  int trials = 0;
+  const auto go_on = [&] {
+    return cuts < options.max_bisections && trials < kTrialsPerBisection * options.max_bisections &&
+           remaining > 0.0 && !unstable_at_start();
+  };
+  for (; go_on(); ++trials) {
     const double upper = proven ? *proven : out.carried + failing_step;
     if (std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper))
       break;
-    const double trial = retry ? remaining : (aim ? kAimAtBound : 0.5) * failing_step;
+    // After a numerical failure and a part carried, the rest is tried again whole; where that
+    // fails too, the next parts grow from the last one instead (near a limit load the steps
+    // that carry are small, and trying the whole rest before each costs a bisection or more).
+    const bool retrying = retry;
+    const double trial = !retry    ? (aim ? kAimAtBound : 0.5) * failing_step
+                         : growing ? std::min(remaining, kGrowth * part_carried)
+                                   : remaining;
     retry = false;
     // Inside a proven bracket a trial that stays undecided moves neither end: the pivoting
     // methods' search on a large LCP (seconds, where the active-set method takes milliseconds)
@@ -81,16 +101,20 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
         failing_step = *proven - out.carried;
       } else {
         failing_step -= trial;
+        part_carried = trial;
         retry = true;
       }
     } else if (part.status == Trial::Status::collapse) {
+      ++cuts;
       proven = out.carried + trial * part.proven_fraction;
       failing_step = *proven - out.carried;
       out.failure = part;
       aim = false;
     } else {
+      ++cuts;
       failing_step = trial;
       aim = false;
+      growing = growing || retrying;
       // Between a load carried and one proven to fail, each undecided trial costs a whole
       // search (the complete method, Lemke on the whole LCP, or the associated flow's proof of
       // a non-associated increment), and a part carried below it moves the bracket's lower end
@@ -99,6 +123,18 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
         out.undecided_inside = true;
         break;
       }
+    }
+  }
+  // Cut to the tolerance without a proof (near a limit load of non-associated flow, between it
+  // and the associated one, no increment may be solvable nor provably not): a proof may still
+  // stand further up, where the load fails whatever the flow.
+  if (!proven && remaining > 0.0 && options.stage_end && *options.stage_end > out.carried) {
+    const double reach = *options.stage_end - out.carried;
+    const Trial far = try_step(reach, Thoroughness::quick);
+    if (far.status == Trial::Status::collapse) {
+      proven = out.carried + reach * far.proven_fraction;
+      out.failure = far;
+      out.undecided_inside = true;
     }
   }
   if (proven) {

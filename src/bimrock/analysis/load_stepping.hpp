@@ -20,6 +20,11 @@ struct SteppingOptions {
   /// Nothing has been carried yet in the analysis: a failure proven within the bracket
   /// tolerance of zero load is an instability under the first load, not a bracket.
   bool first_load = false;
+  /// Load control: the stage factor at the stage's end. Where the cuts of a step end undecided
+  /// without a proof, one trial from the load carried to there looks for a proof above (a
+  /// certificate, or associated flow's for non-associated flow: docs/formulation.md); found,
+  /// the collapse is bracketed, with undecided trials inside. Empty: none.
+  std::optional<double> stage_end{};
 };
 
 struct SteppedIncrement {

@@ -240,8 +240,10 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
       return solve_increment(ctx, result.state, s, options, tuning, structure.solver(), memory,
                              thoroughness);
     };
-    const SteppingOptions stepping{options.bracket_tolerance, options.max_bisections,
-                                   stage.control.has_value(), false};
+    SteppingOptions stepping{options.bracket_tolerance, options.max_bisections,
+                             stage.control.has_value(), false};
+    if (!stage.control)
+      stepping.stage_end = 1.0;
     for (int n = 0; n < stage.increments; ++n) {
       SteppingOptions these = stepping;
       these.first_load = st == 0 && result.history.empty();
