@@ -273,7 +273,7 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       // the solve did not end (the associated increment costs what a round of associated flow
       // does), before the next round's dense routes: past the associated limit load that proof
       // is the answer, and what the dense routes find there is a round that fails anyway.
-      const auto associated_proof = [&]() -> std::optional<AssociatedBound> {
+      const auto associated_collapse = [&]() -> std::optional<Trial> {
         if (!non_associated)
           return std::nullopt;
         AssociatedBound bound =
@@ -283,14 +283,13 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
                   bound.associated.columns_seconds);
         if (!bound.proven())
           return std::nullopt;
-        return bound;
+        t.proven_fraction = bound.proven_fraction;
+        t.du = std::move(bound.du);
+        return collapse(sys, bound.ray, ctx, std::move(t));
       };
       if (solution.outcome == Outcome::interrupted) {
-        if (std::optional<AssociatedBound> bound = associated_proof()) {
-          t.proven_fraction = bound->proven_fraction;
-          t.du = std::move(bound->du);
-          return collapse(sys, bound->ray, ctx, std::move(t));
-        }
+        if (std::optional<Trial> proven = associated_collapse())
+          return std::move(*proven);
         // The next round holds the points the iterate violates, or goes on without the points
         // around the flow where it stalled on them.
         ++memory.interrupted_rounds;
@@ -307,11 +306,8 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
         return collapse(sys, solution.ray, ctx, std::move(t));
       }
       if (solution.outcome == Outcome::undecided) {
-        if (std::optional<AssociatedBound> bound = associated_proof()) {
-          t.proven_fraction = bound->proven_fraction;
-          t.du = std::move(bound->du);
-          return collapse(sys, bound->ray, ctx, std::move(t));
-        }
+        if (std::optional<Trial> proven = associated_collapse())
+          return std::move(*proven);
         return t;  // failed: the caller cuts the step
       }
       z = solution.z;
