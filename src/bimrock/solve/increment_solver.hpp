@@ -4,8 +4,9 @@
 /// not decide. Behind it (docs/solution-strategy.md):
 /// - the stiffness the LCP is solved on: K, or K condensed onto a zone (stiffness_zones.hpp);
 /// - the primal-dual active-set method, warm-started, on the sparse reduced tangent when many
-///   rows are active (Cholesky for associated flow, LU otherwise), else on the dense active
-///   block (only the columns of active rows are formed);
+///   rows are active (Cholesky for associated flow, LU otherwise: a non-associated LCP is first
+///   split into associated ones, whose active sets are tried on it, symmetric_splitting.hpp),
+///   else on the dense active block (only the columns of active rows are formed);
 /// - where it fails, Lemke on a working set of rows, then on the whole matrix;
 /// - last, branch and bound on the complementary pairs, which decides every LCP.
 #include <vector>
