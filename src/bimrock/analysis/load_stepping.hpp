@@ -4,7 +4,8 @@
 /// bisected: parts that carry are kept, and the collapse load is bracketed between the largest
 /// factor carried and the nearest one proven to fail, to a relative tolerance. A step that fails
 /// only numerically (no solution found, none proven absent) proves nothing: it is cut, and once a
-/// part of it has carried the rest is tried again from the new state.
+/// part of it has carried the rest is tried again from the new state (where that fails too, the
+/// next parts grow from the last one).
 #include <functional>
 #include <optional>
 
