@@ -74,6 +74,43 @@ TEST(YieldSystem, NonAssociatedFlowDoesNot) {
   EXPECT_GT((lcp - lcp.transpose()).norm(), 1e-3 * lcp.norm());
 }
 
+// The splitting of a non-associated LCP (solve/symmetric_splitting.hpp): with each yield
+// gradient turned along the flow, the LCP matrix is symmetric, f0 and Phi are the model's, and
+// what C loses is, for a joint's slip rows, the friction term of the normal stress: Mohr-Coulomb
+// f = +-tau + sigma_n tan(phi) - c flows along (+-1, tan(psi)), so C - C~ = (tan(phi) -
+// tan(psi)) dsigma_n/dU, and dsigma_n/dU is the C row of the point's tension cut-off
+// (sigma_n - sigma_t).
+TEST(YieldSystem, GradientsAlongTheFlowLeaveASymmetricLcpAndTheFrictionOfTheNormalStress) {
+  const double tan_phi = 0.6, tan_psi = 0.1;
+  const Model m = plastic_assembly(tan_phi, tan_psi, false);
+  const auto points = make_yield_points(m);
+  const std::vector<PlasticState> states(points.size());
+  const Eigen::VectorXd u = Eigen::VectorXd::Random(m.n_dofs()) * 1e-4;
+  const YieldSystem sys = assemble_yield_system(m, points, states, u, all_points(points));
+  const YieldSystem along = assemble_yield_system(m, points, states, u, all_points(points),
+                                                  FlowRule::gradient_along_flow);
+  ASSERT_EQ(along.size(), sys.size());
+  const Eigen::MatrixXd lcp = lcp_matrix(m, along);
+  EXPECT_LT((lcp - lcp.transpose()).norm(), 1e-10 * lcp.norm());
+  EXPECT_TRUE(follows_associated_flow(along));
+  EXPECT_FALSE(follows_associated_flow(sys));
+  EXPECT_EQ((along.f0 - sys.f0).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(Eigen::MatrixXd(along.phi - sys.phi).cwiseAbs().maxCoeff(), 0.0);
+  const Eigen::MatrixXd c = sys.c, c_along = along.c;
+  int joint_points = 0;
+  for (int r = 0; r < sys.size(); r += 3) {
+    ASSERT_TRUE(points[static_cast<std::size_t>(sys.rows[r].point)].is_interface());
+    const Eigen::RowVectorXd normal = c.row(r + kOpeningMode);
+    for (int slip = 0; slip < 2; ++slip) {
+      const Eigen::RowVectorXd lost = c.row(r + slip) - c_along.row(r + slip);
+      EXPECT_LT((lost - (tan_phi - tan_psi) * normal).norm(), 1e-12 * normal.norm()) << r;
+    }
+    EXPECT_EQ((c.row(r + kOpeningMode) - c_along.row(r + kOpeningMode)).norm(), 0.0);
+    ++joint_points;
+  }
+  EXPECT_GT(joint_points, 10);
+}
+
 TEST(YieldSystem, CIsTheDerivativeOfTheWeightedYieldFunctions) {
   const Model m = plastic_assembly(0.6, 0.2, true);
   const auto points = make_yield_points(m);

@@ -34,7 +34,7 @@ struct IncrementLcp {
   Eigen::VectorXd warm;  ///< per row: 1 where the solve starts active, else 0
   /// Non-associated flow under load control: the same rows with each yield function's gradient
   /// along its flow (FlowRule::gradient_along_flow), the symmetric part of the splitting that
-  /// warm-starts the solve (symmetric_splitting.hpp). Null: none.
+  /// finds the solve's active set (symmetric_splitting.hpp). Null: none.
   const YieldSystem* along_flow = nullptr;
 };
 
