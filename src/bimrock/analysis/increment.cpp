@@ -254,7 +254,7 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
     const bool non_associated =
         !ctx.stage.control && sys.size() > 0 && !follows_associated_flow(sys);
     std::optional<YieldSystem> along_flow;
-    if (non_associated) {
+    if (non_associated && solver.tuning().splitting) {
       along_flow = assemble_yield_system(ctx.model, ctx.points, s.points, s.u,
                                          candidates.in_lcp(solver), FlowRule::gradient_along_flow);
       lcp.along_flow = &*along_flow;
