@@ -90,17 +90,36 @@ Eigen::VectorXd stage_loads(const Model& model, int stage, const std::vector<cha
   return p;
 }
 
-// Neither carried nor proven to fail: near a limit load the LCP is nearly singular. The analysis
-// stops, with every carried increment kept, and says what to try.
-Stop undecided_stop(int stage_index, const Stage& stage, double carried) {
-  const std::string what_to_try =
+// Whether some material's dilation differs from its friction (the LCP is then not symmetric).
+bool has_nonassociated_flow(const Model& model) {
+  for (const JointMaterial& m : model.joint_materials)
+    if (m.strength && (m.strength->dilation != m.strength->friction.peak ||
+                       m.strength->dilation != m.strength->friction.residual))
+      return true;
+  for (const BlockMaterial& m : model.block_materials)
+    if (m.strength && m.strength->dilation != m.strength->friction)
+      return true;
+  return false;
+}
+
+// Neither carried nor proven to fail: near a limit load the LCP is nearly singular, and with
+// non-associated flow the splitting can fail to converge below it as well. The analysis stops,
+// with every carried increment kept, and says what to try.
+Stop undecided_stop(const Model& model, int stage_index, const Stage& stage, double carried) {
+  std::string what_to_try =
       stage.control ? "; try more increments in this stage"
                     : "; to pass a limit load, prescribe a monitor's displacement in this stage "
                       "instead (stages[].control, docs/case-file.md)";
+  // Radenkovic's first theorem: no flow rule carries more than associated flow.
+  if (has_nonassociated_flow(model))
+    what_to_try +=
+        "; with each dilation set equal to its friction (associated flow) the same case finds "
+        "a collapse load that bounds this one's from above";
   return Stop{stage_index, carried,
               "the increment after stage factor " + std::to_string(carried) +
                   " could not be solved accurately, nor shown to have no solution (the "
-                  "structure is close to a limit load)" +
+                  "structure is close to a limit load, or with dilation below friction the "
+                  "increment is beyond the solver's reach)" +
                   what_to_try};
 }
 
@@ -251,7 +270,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
       const SteppedIncrement done =
           step_increment(step, result.state.stage_factor, try_step, carry, these);
       if (done.outcome == SteppedIncrement::Outcome::undecided) {
-        result.stopped = undecided_stop(st, stage, done.carried);
+        result.stopped = undecided_stop(model, st, stage, done.carried);
         return;
       }
       if (done.outcome == SteppedIncrement::Outcome::collapse) {
