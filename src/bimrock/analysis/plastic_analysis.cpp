@@ -110,16 +110,17 @@ Stop undecided_stop(const Model& model, int stage_index, const Stage& stage, dou
       stage.control ? "; try more increments in this stage"
                     : "; to pass a limit load, prescribe a monitor's displacement in this stage "
                       "instead (stages[].control, docs/case-file.md)";
-  // Radenkovic's first theorem: no flow rule carries more than associated flow.
-  if (has_nonassociated_flow(model))
+  std::string why = "the structure is close to a limit load";
+  if (has_nonassociated_flow(model)) {
+    why += ", or with dilation below friction the increment is beyond the solver's reach";
+    // Radenkovic's first theorem: no flow rule carries more than associated flow.
     what_to_try +=
         "; with each dilation set equal to its friction (associated flow) the same case finds "
         "a collapse load that bounds this one's from above";
+  }
   return Stop{stage_index, carried,
               "the increment after stage factor " + std::to_string(carried) +
-                  " could not be solved accurately, nor shown to have no solution (the "
-                  "structure is close to a limit load, or with dilation below friction the "
-                  "increment is beyond the solver's reach)" +
+                  " could not be solved accurately, nor shown to have no solution (" + why + ")" +
                   what_to_try};
 }
 
