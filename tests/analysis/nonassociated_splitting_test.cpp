@@ -6,7 +6,7 @@
 // (SolverTuning::splitting = false, then the dense routes) and once split into associated ones
 // whose active sets are tried on the LCP (the default): the carried stage factors, the monitor's
 // displacement and the collapse bracket must agree, and the splitting must have solved some of
-// the increments itself.
+// the increments itself. The same for the dense active block tried first.
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
@@ -17,9 +17,11 @@ namespace bimrock {
 namespace {
 
 TEST(NonAssociatedSplitting, GivesTheSameAnalysisAsTheBlockRuleAlone) {
-  const PlasticResult block_rule =
-      testing::run_abutment({.solver = {.splitting = false}}, 100, {}, JointFlow::no_dilation);
-  const PlasticResult split = testing::run_abutment({}, 100, {}, JointFlow::no_dilation);
+  // Every LCP the reduced tangent serves goes to it (none to the dense block first).
+  const PlasticResult block_rule = testing::run_abutment(
+      {.solver = {.splitting = false, .dense_first_rows = 0}}, 100, {}, JointFlow::no_dilation);
+  const PlasticResult split =
+      testing::run_abutment({.solver = {.dense_first_rows = 0}}, 100, {}, JointFlow::no_dilation);
   testing::expect_same_analysis(block_rule, split);
   // The splitting ran: its inner LCPs are active-set iterations on the symmetric tangent, far
   // more of them than the block rule alone takes.
@@ -29,6 +31,22 @@ TEST(NonAssociatedSplitting, GivesTheSameAnalysisAsTheBlockRuleAlone) {
   for (const IncrementRecord& i : split.history)
     with_splitting += i.active_set_iterations;
   EXPECT_GT(with_splitting, alone);
+}
+
+// The dense active block first, where few rows are expected active (the default), against the
+// reduced tangent for every LCP it serves: the same analysis, and the dense block solved some of
+// the LCPs that would have gone to the tangent.
+TEST(NonAssociatedSplitting, TheDenseBlockFirstGivesTheSameAnalysis) {
+  const PlasticResult tangent =
+      testing::run_abutment({.solver = {.dense_first_rows = 0}}, 100, {}, JointFlow::no_dilation);
+  const PlasticResult dense_first = testing::run_abutment({}, 100, {}, JointFlow::no_dilation);
+  testing::expect_same_analysis(tangent, dense_first);
+  int on_tangent = 0, with_dense_first = 0;
+  for (const IncrementRecord& i : tangent.history)
+    on_tangent += i.tangent_factorizations;
+  for (const IncrementRecord& i : dense_first.history)
+    with_dense_first += i.tangent_factorizations;
+  EXPECT_LT(with_dense_first, on_tangent);
 }
 
 }  // namespace

@@ -43,7 +43,6 @@ AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s
   if (!certifies_infeasibility(q, r, mtr, sizes, m_max))
     return bound;
   bound.ray = r;
-  bound.du = ctx.k.solve(Eigen::VectorXd(associated.phi * r));
   bound.proven_fraction =
       lcp.load_part.size() == q.size() ? certified_from(q, lcp.load_part, r) : 1.0;
   return bound;

@@ -26,7 +26,6 @@ namespace bimrock {
 struct AssociatedBound {
   IncrementSolution associated;  ///< the associated increment's solve (its work is the trial's)
   Eigen::VectorXd ray;           ///< proven: the associated mechanism's multipliers (>= 0, max 1)
-  Eigen::VectorXd du;            ///< proven: its displacements, K^-1 Phi_associated ray
   double proven_fraction = 1.0;  ///< proven: the least fraction of the step proven to fail
   [[nodiscard]] bool proven() const { return ray.size() > 0; }
 };

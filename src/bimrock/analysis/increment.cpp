@@ -264,18 +264,17 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       IterateCheck check{
           ctx, s, sys, lcp, candidates, solver, step, tol, solver.tuning().interrupt_after, {}, {}};
       const IncrementSolver::Interrupt interrupt = std::ref(check);
-      const IncrementSolution solution =
-          solver.solve(lcp, &interrupt, candidates.around(), thoroughness);
-      on_tangent = tally(solution, t);
-      clock.lap("increments: LCP", "increments: K^-1 Phi columns", solution.columns_seconds);
       using Outcome = IncrementSolution::Outcome;
       // Non-associated flow: no flow rule carries what associated flow cannot. Tried wherever
       // the solve did not end (the associated increment costs what a round of associated flow
-      // does), before the next round's dense routes: past the associated limit load that proof
-      // is the answer, and what the dense routes find there is a round that fails anyway.
+      // does), before the pivoting methods and the next round: past the associated limit load
+      // that proof is the answer, and what the pivoting methods find there (in seconds on a
+      // large LCP) is a round that fails anyway.
+      bool associated_tried = false;
       const auto associated_collapse = [&]() -> std::optional<Trial> {
-        if (!non_associated)
+        if (!non_associated || associated_tried)
           return std::nullopt;
+        associated_tried = true;
         AssociatedBound bound =
             associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver);
         tally(bound.associated, t);
@@ -283,10 +282,27 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
                   bound.associated.columns_seconds);
         if (!bound.proven())
           return std::nullopt;
+        // The mechanism's displacements with the joints' own flow, K^-1 Phi r: with dilation
+        // below friction the associated ones would show a joint opening that does not.
         t.proven_fraction = bound.proven_fraction;
-        t.du = std::move(bound.du);
         return collapse(sys, bound.ray, ctx, std::move(t));
       };
+      const auto solve = [&](Routes routes, const IncrementSolver::Interrupt* seen) {
+        const IncrementSolution solution =
+            solver.solve(lcp, seen, candidates.around(), thoroughness, routes);
+        const bool tangent = tally(solution, t);
+        if (routes != Routes::pivoting)
+          on_tangent = tangent;
+        clock.lap("increments: LCP", "increments: K^-1 Phi columns", solution.columns_seconds);
+        return solution;
+      };
+      IncrementSolution solution =
+          solve(non_associated ? Routes::up_to_pivoting : Routes::all, &interrupt);
+      if (solution.pivoting_left) {
+        if (std::optional<Trial> proven = associated_collapse())
+          return std::move(*proven);
+        solution = solve(Routes::pivoting, nullptr);
+      }
       if (solution.outcome == Outcome::interrupted) {
         if (std::optional<Trial> proven = associated_collapse())
           return std::move(*proven);

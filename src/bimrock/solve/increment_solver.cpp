@@ -151,7 +151,8 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
           ActiveSetOptions{.max_iterations = kProposalSteps, .murty_after_cycle = false}) {}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
-                                         bool stop_unsolved, Thoroughness thoroughness) {
+                                         bool stop_unsolved, Thoroughness thoroughness,
+                                         Routes routes) {
   using Outcome = IncrementSolution::Outcome;
   IncrementSolution out;
   const CondensedStiffness& stiffness = zones_.stiffness();
@@ -180,8 +181,25 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     return out;
   };
   LcpResult r;
-  out.on_tangent = tuning_.active_set && tuning_.reduced_tangent_rows >= 0 && !lcp.control &&
-                   lcp.warm.sum() >= tuning_.reduced_tangent_rows;
+  const bool active_set = tuning_.active_set && routes != Routes::pivoting;
+  const double expected_active = lcp.warm.sum();
+  out.on_tangent = active_set && tuning_.reduced_tangent_rows >= 0 && !lcp.control &&
+                   expected_active >= tuning_.reduced_tangent_rows;
+  // A non-associated LCP with few rows active: the dense active block first. Where it
+  // converges it costs a few LU factorizations of that block, where the splitting on the
+  // reduced tangent solves tens of associated-form LCPs; where it does not, the tangent route
+  // goes on.
+  bool dense_tried = false;
+  if (out.on_tangent && lcp.along_flow && tuning_.splitting &&
+      expected_active < tuning_.dense_first_rows && !on_zone.symmetric()) {
+    r = active_set_.solve(on_zone, warm);
+    out.active_set_iterations += r.steps;
+    dense_tried = true;
+    if (decided(r)) {
+      out.on_tangent = false;
+      return finish(r.status == LcpStatus::solved ? Outcome::solved : Outcome::no_solution, r);
+    }
+  }
   if (out.on_tangent) {
     // Many rows active: the equations of each active set on the sparse reduced tangent. It
     // reads no column of K^-1 Phi: those kept go, to make room for its factor.
@@ -235,12 +253,16 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     if (!decided(r) && m > dense_rows)
       return finish(Outcome::undecided, r);  // too large for the dense routes
   }
-  if (tuning_.active_set && !decided(r)) {
+  if (active_set && !decided(r) && !dense_tried) {
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
   }
   if (!decided(r) && thoroughness == Thoroughness::quick && m > tuning_.reduced_tangent_rows)
     return finish(Outcome::undecided, r);  // no pivoting on a large LCP
+  if (!decided(r) && routes == Routes::up_to_pivoting) {
+    out.pivoting_left = true;  // the caller's proof first
+    return finish(Outcome::undecided, r);
+  }
   // Under displacement control, where the semismooth Newton method below would start: the
   // active-set method's iterate (kept only there, Lemke replaces r).
   Eigen::VectorXd iterate;

@@ -5,8 +5,9 @@
 /// - the stiffness the LCP is solved on: K, or K condensed onto a zone (stiffness_zones.hpp);
 /// - the primal-dual active-set method, warm-started, on the sparse reduced tangent when many
 ///   rows are active (Cholesky for associated flow, LU otherwise: a non-associated LCP is first
-///   split into associated ones, whose active sets are tried on it, symmetric_splitting.hpp),
-///   else on the dense active block (only the columns of active rows are formed);
+///   split into associated ones, whose active sets are tried on it, symmetric_splitting.hpp,
+///   unless the dense active block solves it first where few rows are active), else on the
+///   dense active block (only the columns of active rows are formed);
 /// - where it fails, Lemke on a working set of rows, then on the whole matrix;
 /// - last, branch and bound on the complementary pairs, which decides every LCP.
 #include <vector>
@@ -44,6 +45,10 @@ struct SolverTuning {
   /// A non-associated LCP on the reduced tangent is first split into associated ones, whose
   /// active sets are tried on it (symmetric_splitting.hpp); false: the block rule alone.
   bool splitting = true;
+  /// A non-associated LCP that the reduced tangent would serve, with fewer rows expected active
+  /// than this, is tried on the dense active block first (the splitting solves tens of
+  /// associated-form LCPs, the block's LU costs the cube of its rows). 0: never.
+  int dense_first_rows = 750;
   ZoneTuning zones{};
 };
 
@@ -63,6 +68,9 @@ struct IncrementSolution {
   /// fail (1 without one).
   double proven_fraction = 1.0;
   bool on_tangent = false;  ///< the active-set method ran on the reduced tangent
+  /// Routes::up_to_pivoting: undecided where the pivoting methods would start (Routes::pivoting
+  /// goes on from there).
+  bool pivoting_left = false;
   int active_set_iterations = 0;
   int tangent_factorizations = 0;
   int pivots = 0;                ///< Lemke's
@@ -76,6 +84,12 @@ struct IncrementSolution {
 /// reduced_tangent_rows rows, where they cost no more than the tangent route. Quick serves the
 /// trials whose undecided answer bounds nothing: those inside a collapse bracket already proven.
 enum class Thoroughness { thorough, quick };
+
+/// Which routes a solve takes: all of them, those before the pivoting methods (Lemke, branch
+/// and bound; an LCP left undecided there is returned undecided), or the pivoting methods alone
+/// (from the rows of the warm start). A caller with a cheaper proof of its own puts it between
+/// the two.
+enum class Routes { all, up_to_pivoting, pivoting };
 
 class IncrementSolver {
  public:
@@ -99,7 +113,8 @@ class IncrementSolver {
   /// instead of going on with the dense routes.
   [[nodiscard]] IncrementSolution solve(const IncrementLcp& lcp, const Interrupt* interrupt,
                                         bool stop_unsolved,
-                                        Thoroughness thoroughness = Thoroughness::thorough);
+                                        Thoroughness thoroughness = Thoroughness::thorough,
+                                        Routes routes = Routes::all);
 
   [[nodiscard]] const SolverTuning& tuning() const { return tuning_; }
   [[nodiscard]] ZoneStatistics zone_statistics() const { return zones_.statistics(); }
