@@ -16,37 +16,39 @@
 namespace bimrock {
 namespace {
 
+// One of an increment's counts of work, over the whole analysis.
+int total(const PlasticResult& r, int IncrementRecord::*count) {
+  int sum = 0;
+  for (const IncrementRecord& i : r.history)
+    sum += i.*count;
+  return sum;
+}
+
+PlasticResult abutment_without_dilation(const PlasticTuning& tuning) {
+  return testing::run_abutment(tuning, 100, {}, JointFlow::no_dilation);
+}
+
 TEST(NonAssociatedSplitting, GivesTheSameAnalysisAsTheBlockRuleAlone) {
   // Every LCP the reduced tangent serves goes to it (none to the dense block first).
-  const PlasticResult block_rule = testing::run_abutment(
-      {.solver = {.splitting = false, .dense_first_rows = 0}}, 100, {}, JointFlow::no_dilation);
-  const PlasticResult split =
-      testing::run_abutment({.solver = {.dense_first_rows = 0}}, 100, {}, JointFlow::no_dilation);
+  const PlasticResult block_rule =
+      abutment_without_dilation({.solver = {.splitting = false, .dense_first_rows = 0}});
+  const PlasticResult split = abutment_without_dilation({.solver = {.dense_first_rows = 0}});
   testing::expect_same_analysis(block_rule, split);
   // The splitting ran: its inner LCPs are active-set iterations on the symmetric tangent, far
   // more of them than the block rule alone takes.
-  int alone = 0, with_splitting = 0;
-  for (const IncrementRecord& i : block_rule.history)
-    alone += i.active_set_iterations;
-  for (const IncrementRecord& i : split.history)
-    with_splitting += i.active_set_iterations;
-  EXPECT_GT(with_splitting, alone);
+  EXPECT_GT(total(split, &IncrementRecord::active_set_iterations),
+            total(block_rule, &IncrementRecord::active_set_iterations));
 }
 
 // The dense active block first, where few rows are expected active (the default), against the
 // reduced tangent for every LCP it serves: the same analysis, and the dense block solved some of
 // the LCPs that would have gone to the tangent.
 TEST(NonAssociatedSplitting, TheDenseBlockFirstGivesTheSameAnalysis) {
-  const PlasticResult tangent =
-      testing::run_abutment({.solver = {.dense_first_rows = 0}}, 100, {}, JointFlow::no_dilation);
-  const PlasticResult dense_first = testing::run_abutment({}, 100, {}, JointFlow::no_dilation);
+  const PlasticResult tangent = abutment_without_dilation({.solver = {.dense_first_rows = 0}});
+  const PlasticResult dense_first = abutment_without_dilation({});
   testing::expect_same_analysis(tangent, dense_first);
-  int on_tangent = 0, with_dense_first = 0;
-  for (const IncrementRecord& i : tangent.history)
-    on_tangent += i.tangent_factorizations;
-  for (const IncrementRecord& i : dense_first.history)
-    with_dense_first += i.tangent_factorizations;
-  EXPECT_LT(with_dense_first, on_tangent);
+  EXPECT_LT(total(dense_first, &IncrementRecord::tangent_factorizations),
+            total(tangent, &IncrementRecord::tangent_factorizations));
 }
 
 }  // namespace
