@@ -287,21 +287,20 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
         t.proven_fraction = bound.proven_fraction;
         return collapse(sys, bound.ray, ctx, std::move(t));
       };
-      const auto solve = [&](Routes routes, const IncrementSolver::Interrupt* seen) {
+      const auto solve = [&](Routes routes) {
         const IncrementSolution solution =
-            solver.solve(lcp, seen, candidates.around(), thoroughness, routes);
+            solver.solve(lcp, &interrupt, candidates.around(), thoroughness, routes);
         const bool tangent = tally(solution, t);
         if (routes != Routes::pivoting)
           on_tangent = tangent;
         clock.lap("increments: LCP", "increments: K^-1 Phi columns", solution.columns_seconds);
         return solution;
       };
-      IncrementSolution solution =
-          solve(non_associated ? Routes::up_to_pivoting : Routes::all, &interrupt);
+      IncrementSolution solution = solve(non_associated ? Routes::up_to_pivoting : Routes::all);
       if (solution.pivoting_left) {
         if (std::optional<Trial> proven = associated_collapse())
           return std::move(*proven);
-        solution = solve(Routes::pivoting, nullptr);
+        solution = solve(Routes::pivoting);
       }
       if (solution.outcome == Outcome::interrupted) {
         if (std::optional<Trial> proven = associated_collapse())

@@ -185,13 +185,12 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
   const double expected_active = lcp.warm.sum();
   out.on_tangent = active_set && tuning_.reduced_tangent_rows >= 0 && !lcp.control &&
                    expected_active >= tuning_.reduced_tangent_rows;
-  // A non-associated LCP with few rows active: the dense active block first. Where it
+  // A non-symmetric LCP with few rows active: the dense active block first. Where it
   // converges it costs a few LU factorizations of that block, where the splitting on the
   // reduced tangent solves tens of associated-form LCPs; where it does not, the tangent route
   // goes on.
   bool dense_tried = false;
-  if (out.on_tangent && lcp.along_flow && tuning_.splitting &&
-      expected_active < tuning_.dense_first_rows && !on_zone.symmetric()) {
+  if (out.on_tangent && expected_active < tuning_.dense_first_rows && !on_zone.symmetric()) {
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
     dense_tried = true;

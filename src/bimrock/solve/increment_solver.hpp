@@ -45,7 +45,7 @@ struct SolverTuning {
   /// A non-associated LCP on the reduced tangent is first split into associated ones, whose
   /// active sets are tried on it (symmetric_splitting.hpp); false: the block rule alone.
   bool splitting = true;
-  /// A non-associated LCP that the reduced tangent would serve, with fewer rows expected active
+  /// A non-symmetric LCP that the reduced tangent would serve, with fewer rows expected active
   /// than this, is tried on the dense active block first (the splitting solves tens of
   /// associated-form LCPs, the block's LU costs the cube of its rows). 0: never.
   int dense_first_rows = 750;
