@@ -88,24 +88,44 @@ TEST(SymmetricSplitting, FindsThePlantedSolutionOfAWeaklyNonSymmetricLcp) {
   }
 }
 
-TEST(SymmetricSplitting, DampsIteratesThatSwapRowsBackAndForth) {
-  // One row: B = 1, E = 1.5, q = -1, so M = 2.5 and z* = 0.4. Undamped, z_k+1 = max(0, 1 - 1.5
-  // z_k) from 0 gives 1, 0, 1, 0, ...: the active set alternates and is never proposed. Halving
-  // the step maps the iteration's factor -1.5 to 1 - 0.5 - 0.75 = -0.25: the iterates settle on
-  // z > 0, which is proposed and solves the LCP.
+TEST(SymmetricSplitting, AcceleratesIteratesThatSwapRowsBackAndForth) {
+  // One row: B = 1, E = 1.5, q = -1, so M = 2.5 and z* = 0.4. The plain splitting,
+  // z_k+1 = max(0, 1 - 1.5 z_k) from 0, gives 1, 0, 1, 0, ...: the active set alternates and is
+  // never proposed. Anderson's method on y = 1.5 z, worked by hand: y = 0 gives z = 1 and the
+  // image 1.5; y = 1.5 gives z = 0 and the image 0; the residuals 1.5 and -1.5 combine to zero
+  // with weights 1/2, so y = 0.75, which gives z = 0.25 > 0 and the image 0.375. The residual
+  // differences -3 and 1.125 (one row) leave a one-column least squares problem, gamma = 1/8,
+  // so y = 0.375 + 1.5 / 8 = 0.5625 and z = 0.4375 > 0: the set {z > 0} held, and its proposal
+  // solves the LCP in the fourth iterate.
   Split s{.b = MatrixXd::Constant(1, 1, 1.0),
           .e = MatrixXd::Constant(1, 1, 1.5),
           .q = VectorXd::Constant(1, -1.0)};
-  const SplittingResult damped = s.run();
-  ASSERT_TRUE(damped.solved);
+  const SplittingResult accelerated = s.run();
+  ASSERT_TRUE(accelerated.solved);
   EXPECT_NEAR(s.solution(0), 0.4, 1e-14);
+  EXPECT_EQ(accelerated.iterations, 4);
+  EXPECT_EQ(accelerated.proposals, 1);
 
-  Split undamped = s;
-  undamped.solution = VectorXd();
-  const SplittingResult r = undamped.run({.least_relaxation = 1.0});
+  Split plain = s;
+  plain.solution = VectorXd();
+  const SplittingResult r = plain.run({.anderson_depth = 0, .damped_after = false});
   EXPECT_FALSE(r.solved);
   EXPECT_EQ(r.proposals, 0);
   EXPECT_EQ(r.iterations, SplittingOptions{}.max_iterations);
+}
+
+TEST(SymmetricSplitting, DampsTheIteratesWhereTheFirstRunEndsUnsolved) {
+  // The same row, the first run plain (no combinations): it ends unsolved after its 40
+  // iterates, and the damped run goes on. Three iterates of 1, 0, 1 change the set each time,
+  // so the relaxation halves: the iteration's factor -1.5 becomes 1 - 0.5 - 0.75 = -0.25, the
+  // iterates settle on z > 0, whose proposal solves the LCP.
+  Split s{.b = MatrixXd::Constant(1, 1, 1.0),
+          .e = MatrixXd::Constant(1, 1, 1.5),
+          .q = VectorXd::Constant(1, -1.0)};
+  const SplittingResult r = s.run({.anderson_depth = 0});
+  ASSERT_TRUE(r.solved);
+  EXPECT_NEAR(s.solution(0), 0.4, 1e-14);
+  EXPECT_GT(r.iterations, SplittingOptions{}.max_iterations);
 }
 
 TEST(SymmetricSplitting, SaysSoWhereAnInnerLcpHasNoSolution) {

@@ -178,6 +178,14 @@ Run run_plastic(int n, int increments, JointFlow flow, bool factor_of_safety,
       writing += seconds_since(w);
     };
     result = run_plastic_analysis(model, options, on_increment, tuning);
+    if (std::getenv("BIMROCK_BENCH_VERBOSE")) {
+      if (result.collapse)
+        fmt::print(stderr, "  collapse in stage {} between factors {:.6f} and {:.6f}\n",
+                   result.collapse->stage, result.collapse->carried, result.collapse->failed);
+      if (result.stopped)
+        fmt::print(stderr, "  stopped in stage {} at factor {:.6f}: {}\n", result.stopped->stage,
+                   result.stopped->factor, result.stopped->reason);
+    }
     run.run_peak_bytes = static_cast<double>(peak_memory_bytes()) - before;
     if (settings.sum_over_processes) {
       run.method = settings.stiffness_method;

@@ -10,14 +10,27 @@
 /// increment of associated form at the normal stresses of the last one, which the symmetric
 /// routes solve fast, warm-started from the last.
 ///
-/// The iterates converge only linearly, and not at all where the left-out part couples strongly
-/// to the flow (near a limit load). So they serve as proposals: once an iterate keeps the last
-/// one's active set, the caller tries that set on the non-symmetric LCP itself (the active-set
-/// method from there, a step or two, checked), and the first one that solves it ends the
-/// iteration. Iterates that swap rows back and forth are damped. Where an inner LCP has no
-/// solution (near a limit load the frozen part of the yield functions, e.g. the normal stresses
-/// a joint's friction acts on, can leave too little strength for the step) or no proposal solves
-/// the LCP, the method proves nothing.
+/// The plain iterates (y_k+1 = E z_k with z_k the inner solution) converge only linearly, and
+/// near a limit load, where the left-out part couples strongly to the flow, they swap rows back
+/// and forth. So they are accelerated by Anderson's method (Walker and Ni, "Anderson acceleration
+/// for fixed-point iterations", SIAM J. Numer. Anal. 49, 2011) on the remainder y = E z, not on
+/// z: the map y -> E LCP(q + y, B) has the same fixed points, and since y enters the inner LCP
+/// only through its right-hand side, every combination of past iterates is admissible, where a
+/// combination of z's would have to be projected on z >= 0 (which spoils the acceleration).
+/// Each next y is the combination of the last depth + 1 images E z_k whose residuals
+/// E z_k - y_k combine to the least norm. A combination can ask more of the frozen strengths
+/// than any plain iterate does: where one leaves an inner LCP unsolved, or the iterations run
+/// out, the splitting starts again, damped instead (after three iterates in a row that change
+/// no fewer rows than the fewest so far, each moves half as far towards its inner solution as
+/// before, down to a quarter: z_k+1 = z_k + omega (z^ - z_k)), which is slower but keeps its
+/// iterates among the plain ones' neighbours.
+///
+/// The iterates serve only as proposals: once an iterate keeps the last one's active set, the
+/// caller tries that set on the non-symmetric LCP itself (the active-set method from there, a
+/// step or two, checked), and the first one that solves it ends the iteration. Where an inner
+/// LCP has no solution (near a limit load the frozen part of the yield functions, e.g. the
+/// normal stresses a joint's friction acts on, can leave too little strength for the step) or
+/// no proposal solves the LCP, the method proves nothing.
 #include <functional>
 
 #include <Eigen/Core>
@@ -27,10 +40,14 @@
 namespace bimrock {
 
 struct SplittingOptions {
+  /// The most iterates of each of the two runs (accelerated, then damped).
   int max_iterations = 40;
-  /// Where this many iterates in a row change no fewer rows of the active set than the least so
-  /// far, the next ones move only half as far towards their inner solutions as before, down to
-  /// least_relaxation (a relaxed splitting, z_k+1 = z_k + omega (z^ - z_k)).
+  /// The past iterates Anderson's method combines besides the last (0: the plain splitting).
+  int anderson_depth = 3;
+  /// Where the accelerated run ends unsolved after combining iterates, the damped run.
+  bool damped_after = true;
+  /// The damped run: after this many iterates in a row that change no fewer rows of the active
+  /// set than the fewest so far, the relaxation halves, down to least_relaxation.
   int stalled_after = 3;
   double least_relaxation = 0.25;
 };
@@ -38,8 +55,8 @@ struct SplittingOptions {
 struct SplittingResult {
   bool solved = false;  ///< a proposal solved the LCP (the caller's try kept the solution)
   Eigen::VectorXd z;    ///< the last inner solution (empty when the first was not solved)
-  int iterations = 0;   ///< inner LCPs solved
-  int proposals = 0;    ///< active sets tried on the LCP
+  int iterations = 0;   ///< inner LCPs solved (both runs)
+  int proposals = 0;    ///< active sets tried on the LCP (both runs)
 };
 
 /// E z, for the iterate z.
