@@ -10,24 +10,30 @@ namespace bimrock {
 
 namespace {
 
-/// The last iterates' remainders y_k, their images g_k = E z_k and residuals f_k = g_k - y_k,
-/// up to depth + 1 of each.
-class AndersonMixing {
+/// The accelerated run's remainders: Anderson's method on y, combining the last iterates'
+/// images g_k = E z_k and residuals f_k = g_k - y_k (up to depth + 1 of each).
+class AcceleratedIterates {
  public:
-  explicit AndersonMixing(int depth) : depth_(depth) {}
+  AcceleratedIterates(const SplittingRemainder& remainder, const Eigen::VectorXd& start, int depth)
+      : remainder_(remainder), depth_(depth), y_(remainder(start)) {}
 
-  /// The next remainder after the image g of y: g - dG gamma, with gamma the least squares
+  [[nodiscard]] const Eigen::VectorXd& y() const { return y_; }
+
+  /// After the inner solution z of y: y <- g - dG gamma, with g = E z and gamma the least squares
   /// solution of dF gamma = f (dF, dG the differences of consecutive residuals and images).
-  [[nodiscard]] Eigen::VectorXd next(const Eigen::VectorXd& y, const Eigen::VectorXd& g) {
-    residuals_.push_back(g - y);
+  void advance(const Eigen::VectorXd& z, Eigen::Index /*changed*/) {
+    const Eigen::VectorXd g = remainder_(z);
+    residuals_.push_back(g - y_);
     images_.push_back(g);
     if (residuals_.size() > static_cast<std::size_t>(depth_) + 1) {
       residuals_.pop_front();
       images_.pop_front();
     }
     const auto k = static_cast<Eigen::Index>(residuals_.size()) - 1;
-    if (k == 0)
-      return g;
+    if (k == 0) {
+      y_ = g;
+      return;
+    }
     Eigen::MatrixXd df(g.size(), k);
     Eigen::MatrixXd dg(g.size(), k);
     for (Eigen::Index j = 0; j < k; ++j) {
@@ -37,54 +43,69 @@ class AndersonMixing {
     }
     // Column pivoting drops differences that are (nearly) dependent on the others.
     const Eigen::VectorXd gamma = df.colPivHouseholderQr().solve(residuals_.back());
-    return g - dg * gamma;
+    y_ = g - dg * gamma;
   }
 
  private:
+  const SplittingRemainder& remainder_;
   int depth_;
+  Eigen::VectorXd y_;
   std::deque<Eigen::VectorXd> residuals_;
   std::deque<Eigen::VectorXd> images_;
 };
 
-/// The relaxation of the damped run: it halves where `stalled_after` iterates in a row change no
-/// fewer rows of the active set than the fewest so far (rows swapping back and forth: the
-/// iteration matrix has an eigenvalue near -1).
-class Damping {
+/// The damped run's iterates z_k+1 = z_k + omega (z^ - z_k), y = E z: omega halves where
+/// `stalled_after` iterates in a row change no fewer rows of the active set than the fewest so
+/// far (rows swapping back and forth: the iteration matrix has an eigenvalue near -1).
+class DampedIterates {
  public:
-  explicit Damping(const SplittingOptions& options) : options_(options) {}
+  DampedIterates(const SplittingRemainder& remainder, const Eigen::VectorXd& start,
+                 const SplittingOptions& options)
+      : remainder_(remainder), options_(options), z_(start), y_(remainder(start)) {}
 
-  [[nodiscard]] double after(Eigen::Index changed) {
-    stalled_ = changed >= least_ ? stalled_ + 1 : 0;
-    least_ = std::min(least_, changed);
-    if (stalled_ >= options_.stalled_after && relaxation_ > options_.least_relaxation) {
-      relaxation_ /= 2.0;
-      stalled_ = 0;
-      least_ = changed;
+  [[nodiscard]] const Eigen::VectorXd& y() const { return y_; }
+
+  /// After the inner solution z, whose active set differs from the last one's in `changed`
+  /// rows (the first inner solution is taken whole).
+  void advance(const Eigen::VectorXd& z, Eigen::Index changed) {
+    if (first_) {
+      first_ = false;
+    } else {
+      stalled_ = changed >= least_ ? stalled_ + 1 : 0;
+      least_ = std::min(least_, changed);
+      if (stalled_ >= options_.stalled_after && relaxation_ > options_.least_relaxation) {
+        relaxation_ /= 2.0;
+        stalled_ = 0;
+        least_ = changed;
+      }
     }
-    return relaxation_;
+    z_ += relaxation_ * (z - z_);
+    y_ = remainder_(z_);
   }
 
  private:
+  const SplittingRemainder& remainder_;
   const SplittingOptions& options_;
+  Eigen::VectorXd z_;
+  Eigen::VectorXd y_;
+  bool first_ = true;
   double relaxation_ = 1.0;
   int stalled_ = 0;
   Eigen::Index least_ = std::numeric_limits<Eigen::Index>::max();
 };
 
-/// One run of the splitting from z_0 = start: accelerated by `mixing`, or damped by `damping`.
-SplittingResult run(const Eigen::VectorXd& q, const SplittingRemainder& remainder,
-                    const SymmetricLcpSolve& solve_symmetric, const ActiveSetProposal& propose,
-                    const Eigen::VectorXd& start, const Eigen::VectorXd* warm, int max_iterations,
-                    AndersonMixing* mixing, Damping* damping) {
+/// One run of the splitting, its remainders y_k given by `iterates`.
+template <class Iterates>
+SplittingResult run(const Eigen::VectorXd& q, const SymmetricLcpSolve& solve_symmetric,
+                    const ActiveSetProposal& propose, const Eigen::VectorXd* warm,
+                    int max_iterations, Iterates iterates) {
   SplittingResult out;
   const Eigen::Index n = q.size();
   Eigen::VectorXd active = warm ? *warm : Eigen::VectorXd::Zero(n);
   Eigen::VectorXd proposed;  // the last active set tried
-  Eigen::VectorXd z = start;
-  Eigen::VectorXd y = remainder(start);
   for (int k = 0; k < max_iterations; ++k) {
     const LcpResult inner =
-        solve_symmetric(Eigen::VectorXd(q + y), k == 0 && !warm ? nullptr : &active);
+        solve_symmetric(Eigen::VectorXd(q + iterates.y()), k == 0 && !warm ? nullptr : &active);
     if (inner.status != LcpStatus::solved || inner.z.size() != n)
       return out;
     out.z = inner.z;
@@ -101,12 +122,7 @@ SplittingResult run(const Eigen::VectorXd& q, const SplittingRemainder& remainde
         return out;
       }
     }
-    if (mixing) {
-      y = mixing->next(y, remainder(inner.z));
-    } else {
-      z += (k > 0 ? damping->after(changed) : 1.0) * (inner.z - z);
-      y = remainder(z);
-    }
+    iterates.advance(inner.z, changed);
   }
   return out;
 }
@@ -117,16 +133,14 @@ SplittingResult solve_by_splitting(const Eigen::VectorXd& q, const SplittingRema
                                    const SymmetricLcpSolve& solve_symmetric,
                                    const ActiveSetProposal& propose, const Eigen::VectorXd& start,
                                    const Eigen::VectorXd* warm, const SplittingOptions& options) {
-  AndersonMixing mixing(options.anderson_depth);
-  SplittingResult accelerated = run(q, remainder, solve_symmetric, propose, start, warm,
-                                    options.max_iterations, &mixing, nullptr);
+  SplittingResult accelerated = run(q, solve_symmetric, propose, warm, options.max_iterations,
+                                    AcceleratedIterates(remainder, start, options.anderson_depth));
   // The first two iterates are plain in both runs: a failure before any combination would
   // come back the same.
   if (accelerated.solved || !options.damped_after || accelerated.iterations < 2)
     return accelerated;
-  Damping damping(options);
-  SplittingResult damped = run(q, remainder, solve_symmetric, propose, start, warm,
-                               options.max_iterations, nullptr, &damping);
+  SplittingResult damped = run(q, solve_symmetric, propose, warm, options.max_iterations,
+                               DampedIterates(remainder, start, options));
   damped.iterations += accelerated.iterations;
   damped.proposals += accelerated.proposals;
   if (damped.z.size() == 0)
