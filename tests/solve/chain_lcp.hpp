@@ -114,6 +114,22 @@ inline VectorXd dense_solution(const ChainLcp& chain, const std::vector<Eigen::I
   return dense_solution(chain.m_dense, chain.n, chain.split.q, active, damping);
 }
 
+// The tangent S - Phi_A N_AA^-1 C_A of the rows `active`, formed densely.
+inline MatrixXd dense_tangent(const ChainLcp& chain, const std::vector<Eigen::Index>& active) {
+  const MatrixXd k = MatrixXd(chain.k_lower).selfadjointView<Eigen::Lower>();
+  const auto a = static_cast<Eigen::Index>(active.size());
+  MatrixXd phi(k.rows(), a);
+  MatrixXd c(a, k.rows());
+  MatrixXd n(a, a);
+  for (Eigen::Index i = 0; i < a; ++i) {
+    phi.col(i) = MatrixXd(chain.phi).col(active[i]);
+    c.row(i) = MatrixXd(chain.c).row(active[i]);
+    for (Eigen::Index j = 0; j < a; ++j)
+      n(i, j) = chain.n.coeff(active[i], active[j]);
+  }
+  return k - phi * n.inverse() * c;
+}
+
 // Rows first, first + step, ... below size: an active set.
 inline std::vector<Eigen::Index> every(Eigen::Index step, Eigen::Index size,
                                        Eigen::Index first = 0) {

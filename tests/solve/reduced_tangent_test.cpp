@@ -3,6 +3,7 @@
 // solved by a dense LU (one active set) or by Lemke (the whole LCP; M is positive definite, so
 // the solution is unique).
 #include <algorithm>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -271,6 +272,38 @@ TEST(ReducedTangent, AnUpdateToATangentThatIsNotPositiveDefiniteIsRefused) {
   TangentFactor fresh_factor;
   ReducedTangentEquations fresh(chain.split, chain.k, fresh_factor);
   EXPECT_FALSE(fresh.solve(next).regular);
+}
+
+// The solve of an active set's tangent (a preconditioner of the non-symmetric one) is that
+// tangent's inverse, from a fresh factor or through an update of the kept one; nothing where the
+// tangent is not positive definite (the chain of the test above).
+TEST(ReducedTangent, TheTangentSolveIsTheTangentsInverse) {
+  ChainLcp chain;
+  make_chain(30, 9, chain);
+  TangentFactor tangent;
+  ReducedTangentEquations equations(chain.split, chain.k, tangent, {64, 64.0});
+  std::mt19937 rng(4);
+  const VectorXd b = testing::random_vector(chain.split.q.size() * 3, rng);
+  std::vector<Eigen::Index> active = every(2, chain.split.q.size());
+  for (const bool fresh : {true, false}) {
+    const std::optional<LinearSolve> solve = equations.tangent_solve(active);
+    ASSERT_TRUE(solve.has_value());
+    const VectorXd x = dense_tangent(chain, active).ldlt().solve(b);
+    EXPECT_LE(((*solve)(b)-x).cwiseAbs().maxCoeff(), 1e-10 * x.cwiseAbs().maxCoeff()) << fresh;
+    active.push_back(1);  // one row more: through an update
+    std::sort(active.begin(), active.end());
+  }
+  EXPECT_EQ(equations.factorizations(), 1);
+  EXPECT_EQ(equations.updated_factors(), 1);
+
+  ChainLcp indefinite;
+  make_chain(20, 17, indefinite);
+  MatrixXd n = MatrixXd(indefinite.n);
+  n.block(10, 10, 2, 2) *= 0.01;
+  indefinite.n = n.sparseView();
+  TangentFactor other;
+  ReducedTangentEquations at_indefinite(indefinite.split, indefinite.k, other);
+  EXPECT_FALSE(at_indefinite.tangent_solve({0, 4, 10}).has_value());
 }
 
 TEST(ReducedTangent, SolvesTheDampedEquationsAsTheDenseBlockDoes) {

@@ -2,10 +2,13 @@
 // tangent, factorized by LU. Expected numbers come from a second method on the same LCP: the
 // dense matrix M = N - C K^-1 Phi formed with a dense LDLT of K, solved by a dense LU (one
 // active set) or by Lemke (the whole LCP: M is positive definite, a P-matrix, so the solution
-// is unique).
+// is unique). GMRES on the tangent is checked against the same dense LU.
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include <Eigen/Dense>
 
 #include <bimrock/solve/active_set_lcp.hpp>
 #include <bimrock/solve/lemke.hpp>
@@ -20,6 +23,7 @@ using Eigen::MatrixXd;
 using Eigen::VectorXd;
 using testing::ChainLcp;
 using testing::dense_solution;
+using testing::dense_tangent;
 using testing::every;
 using testing::make_nonassociated_chain;
 
@@ -53,6 +57,57 @@ TEST(UnsymmetricTangent, TheActiveSetMethodOnItFindsLemkesSolution) {
     EXPECT_LE((r.z - second.z).cwiseAbs().maxCoeff(), 1e-8 * second.z.cwiseAbs().maxCoeff())
         << seed;
     EXPECT_GT(equations.factorizations(), 0);
+  }
+}
+
+// With a preconditioner (here the symmetric part of the tangent, factorized densely: a
+// symmetric tangent near it, as the associated form's is in the analysis), the equations are
+// solved by GMRES without an LU, to the dense block's answer.
+TEST(UnsymmetricTangent, SolvesByGmresWithASymmetricTangentNearIt) {
+  ChainLcp chain;
+  make_nonassociated_chain(40, 5, chain);
+  std::vector<std::vector<Eigen::Index>> asked;
+  UnsymmetricTangentEquations::Preconditioner near =
+      [&](const std::vector<Eigen::Index>& active) -> std::optional<LinearSolve> {
+    asked.push_back(active);
+    const MatrixXd t = dense_tangent(chain, active);
+    const Eigen::LDLT<MatrixXd> symmetric_part(0.5 * (t + t.transpose()));
+    return [symmetric_part](const VectorXd& b) { return VectorXd(symmetric_part.solve(b)); };
+  };
+  UnsymmetricTangentEquations equations(chain.split, chain.k, near);
+  for (const Eigen::Index step : {1, 2, 3}) {
+    const std::vector<Eigen::Index> active = every(step, equations.size());
+    const ActiveSetEquations::Solution s = equations.solve(active);
+    ASSERT_TRUE(s.regular);
+    const VectorXd z = dense_solution(chain, active, {});
+    EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-9 * z.cwiseAbs().maxCoeff()) << step;
+    EXPECT_EQ(asked.back(), active);
+  }
+  EXPECT_EQ(equations.factorizations(), 0);
+  EXPECT_EQ(equations.iterative_solves(), 3);
+}
+
+// A preconditioner that makes GMRES look converged on a wrong answer (it maps every residual
+// to zero), or none for the rows asked: the result is measured, and the LU solves it.
+TEST(UnsymmetricTangent, TheLuSolvesWhereGmresMissesTheEquations) {
+  ChainLcp chain;
+  make_nonassociated_chain(40, 5, chain);
+  const std::vector<Eigen::Index> active = every(2, chain.split.q.size());
+  const VectorXd z = dense_solution(chain, active, {});
+  const UnsymmetricTangentEquations::Preconditioner zero =
+      [](const std::vector<Eigen::Index>&) -> std::optional<LinearSolve> {
+    return [](const VectorXd& b) { return VectorXd(VectorXd::Zero(b.size())); };
+  };
+  const UnsymmetricTangentEquations::Preconditioner none =
+      [](const std::vector<Eigen::Index>&) -> std::optional<LinearSolve> { return std::nullopt; };
+  for (const auto& preconditioner : {zero, none}) {
+    UnsymmetricTangentEquations equations(chain.split, chain.k, preconditioner);
+    const ActiveSetEquations::Solution s =
+        equations.solve(active, {}, ActiveSetEquations::Check::from_solve);
+    ASSERT_TRUE(s.regular);
+    EXPECT_LE((s.z - z).cwiseAbs().maxCoeff(), 1e-8 * z.cwiseAbs().maxCoeff());
+    EXPECT_EQ(equations.factorizations(), 1);
+    EXPECT_EQ(equations.iterative_solves(), 0);
   }
 }
 

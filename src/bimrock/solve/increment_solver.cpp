@@ -104,18 +104,16 @@ class LcpOnZone final : public LcpColumns {
 };
 
 // The splitting (symmetric_splitting.hpp) of a non-associated LCP on the reduced tangent:
-// M = M~ + E, M~ the LCP of the rows along the flow, solved by the symmetric route (Cholesky, the
-// kept factor's updates). The flow's columns S^-1 Phi are the same in both. Nothing where M~ is
-// not symmetric either (a softening law whose coupling of the modes is not).
-std::optional<SplittingResult> splitting_on_tangent(
-    const YieldSystem& along_flow, LcpOnZone& on_zone, const std::vector<YieldPoint>& points,
-    FlexibilityColumns& columns, const CondensedStiffness& stiffness, TangentFactor& tangent,
-    ActiveSetLcp& active_set, const ActiveSetProposal& propose, const Eigen::VectorXd& start,
-    const Eigen::VectorXd* warm, IncrementSolution& out) {
-  const Eigen::Index m = on_zone.size();
-  LcpOnZone symmetric_part(along_flow, points, columns, Eigen::VectorXd::Zero(m), {}, nullptr, {});
-  if (!symmetric_part.symmetric())
-    return std::nullopt;
+// M = M~ + E, M~ (`symmetric_part`, with q = 0) the LCP of the rows along the flow, solved by
+// the symmetric route (Cholesky, the kept factor's updates). The flow's columns S^-1 Phi are
+// the same in both.
+SplittingResult splitting_on_tangent(const YieldSystem& along_flow, LcpOnZone& symmetric_part,
+                                     LcpOnZone& on_zone, const std::vector<YieldPoint>& points,
+                                     FlexibilityColumns& columns,
+                                     const CondensedStiffness& stiffness, TangentFactor& tangent,
+                                     ActiveSetLcp& active_set, const ActiveSetProposal& propose,
+                                     const Eigen::VectorXd& start, const Eigen::VectorXd* warm,
+                                     IncrementSolution& out) {
   const SplittingRemainder remainder = [&](const Eigen::VectorXd& z) {
     return Eigen::VectorXd(on_zone.times(z) - symmetric_part.times(z));
   };
@@ -149,6 +147,21 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
                                    .interrupt_after = tuning.interrupt_after}),
       proposal_check_(
           ActiveSetOptions{.max_iterations = kProposalSteps, .murty_after_cycle = false}) {}
+
+bool IncrementSolver::try_dense_first() {
+  constexpr int kFailuresBeforePeriod = 3;
+  if (dense_first_failures_ < kFailuresBeforePeriod)
+    return true;
+  if (++dense_first_passed_ < tuning_.dense_first_period)
+    return false;
+  dense_first_passed_ = 0;
+  return true;
+}
+
+void IncrementSolver::tried_dense_first(bool decided) {
+  dense_first_failures_ = decided ? 0 : dense_first_failures_ + 1;
+  dense_first_passed_ = 0;
+}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
                                          bool stop_unsolved, Thoroughness thoroughness,
@@ -190,10 +203,12 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
   // reduced tangent solves tens of associated-form LCPs; where it does not, the tangent route
   // goes on.
   bool dense_tried = false;
-  if (out.on_tangent && expected_active < tuning_.dense_first_rows && !on_zone.symmetric()) {
+  if (out.on_tangent && expected_active < tuning_.dense_first_rows && !on_zone.symmetric() &&
+      try_dense_first()) {
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
     dense_tried = true;
+    tried_dense_first(decided(r));
     if (decided(r)) {
       out.on_tangent = false;
       return finish(r.status == LcpStatus::solved ? Outcome::solved : Outcome::no_solution, r);
@@ -204,15 +219,43 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     // reads no column of K^-1 Phi: those kept go, to make room for its factor.
     columns.clear();
     const SplitLcp split = on_zone.split(stiffness.lower());
-    // Symmetric (associated flow): Cholesky, with the kept factor's updates; else LU.
+    // Symmetric (associated flow): Cholesky, with the kept factor's updates; else LU, or GMRES
+    // preconditioned by the tangent of the rows along the flow.
+    std::optional<YieldSystem> along_flow;
+    std::optional<LcpOnZone> symmetric_part;
+    std::optional<SplitLcp> symmetric_split;
+    std::optional<ReducedTangentEquations> symmetric_tangent;
     std::unique_ptr<ActiveSetEquations> equations;
+    // The tangent's factorizations, the preconditioner's among them.
+    const auto factorizations = [&] {
+      return equations->factorizations() +
+             (symmetric_tangent ? symmetric_tangent->factorizations() : 0);
+    };
     Eigen::VectorXd proposed;  // non-associated flow: the splitting's last active set
     if (on_zone.symmetric()) {
       equations =
           std::make_unique<ReducedTangentEquations>(split, stiffness.factor(), zones_.tangent());
     } else {
-      equations = std::make_unique<UnsymmetricTangentEquations>(split, stiffness.factor());
-      if (lcp.along_flow && tuning_.splitting) {
+      // The LCP of the rows along the flow, where it is symmetric (not for a softening law
+      // whose coupling of the modes is not): its tangent preconditions the non-symmetric one,
+      // and its LCPs are the splitting's inner ones.
+      if (lcp.along_flow) {
+        along_flow.emplace(stiffness.local(*lcp.along_flow));
+        symmetric_part.emplace(*along_flow, lcp.points, columns, Eigen::VectorXd::Zero(m),
+                               Eigen::VectorXd(), nullptr, Eigen::VectorXd());
+        if (symmetric_part->symmetric()) {
+          symmetric_split.emplace(symmetric_part->split(stiffness.lower()));
+          symmetric_tangent.emplace(*symmetric_split, stiffness.factor(), zones_.tangent());
+        }
+      }
+      UnsymmetricTangentEquations::Preconditioner preconditioner;
+      if (symmetric_tangent)
+        preconditioner = [&](const std::vector<Eigen::Index>& active) {
+          return symmetric_tangent->tangent_solve(active);
+        };
+      equations = std::make_unique<UnsymmetricTangentEquations>(split, stiffness.factor(),
+                                                                std::move(preconditioner));
+      if (symmetric_tangent && tuning_.splitting) {
         // The splitting proposes active sets, each tried by a step or two of the active-set
         // method on the LCP itself.
         const ActiveSetProposal propose = [&](const Eigen::VectorXd& active) {
@@ -223,26 +266,26 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
           r = std::move(tried);
           return true;
         };
-        const std::optional<SplittingResult> splitting = splitting_on_tangent(
-            stiffness.local(*lcp.along_flow), on_zone, lcp.points, columns, stiffness,
-            zones_.tangent(), active_set_, propose, lcp.gap_old, warm, out);
-        out.tangent_factorizations += equations->factorizations();
-        if (splitting && splitting->solved)
+        const SplittingResult splitting = splitting_on_tangent(
+            *along_flow, *symmetric_part, on_zone, lcp.points, columns, stiffness, zones_.tangent(),
+            active_set_, propose, lcp.gap_old, warm, out);
+        out.tangent_factorizations += factorizations();
+        if (splitting.solved)
           return finish(Outcome::solved, r);
         // Where no proposal solved it, the block rule seldom converges on a non-symmetric LCP
         // this large, and each of its steps costs a factorization: a quick solve ends here.
-        if (splitting && thoroughness == Thoroughness::quick)
+        if (thoroughness == Thoroughness::quick)
           return finish(Outcome::undecided, r);
-        if (splitting && splitting->proposals > 0) {
-          proposed = (splitting->z.array() > 0.0).cast<double>();
+        if (splitting.proposals > 0) {
+          proposed = (splitting.z.array() > 0.0).cast<double>();
           warm = &proposed;  // the block rule goes on from the last proposal's neighbourhood
         }
       }
     }
-    const int factorizations_before = equations->factorizations();
+    const int factorizations_before = factorizations();
     r = active_set_.solve(*equations, warm, interrupt);
     out.active_set_iterations += r.steps;
-    out.tangent_factorizations += equations->factorizations() - factorizations_before;
+    out.tangent_factorizations += factorizations() - factorizations_before;
     const bool unsolved = r.z.size() == m && (r.status == LcpStatus::iteration_limit ||
                                               r.status == LcpStatus::numerical_failure);
     if (r.status == LcpStatus::interrupted || (stop_unsolved && unsolved))

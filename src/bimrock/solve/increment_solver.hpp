@@ -49,6 +49,10 @@ struct SolverTuning {
   /// than this, is tried on the dense active block first (the splitting solves tens of
   /// associated-form LCPs, the block's LU costs the cube of its rows). 0: never.
   int dense_first_rows = 750;
+  /// After three tries of the dense active block first have failed in a row, it is tried only
+  /// on every this-many-th LCP it would serve, until one succeeds (near a limit load it can fail
+  /// on one LCP after another, each try costing its block's columns). 1: always.
+  int dense_first_period = 4;
   ZoneTuning zones{};
 };
 
@@ -124,6 +128,12 @@ class IncrementSolver {
   StiffnessZones zones_;
   ActiveSetLcp active_set_;
   ActiveSetLcp proposal_check_;  // tries the active sets the splitting proposes
+  /// Whether the dense active block is tried first on an LCP that it would serve (the period
+  /// after failures, SolverTuning::dense_first_period), and what came of a try.
+  [[nodiscard]] bool try_dense_first();
+  void tried_dense_first(bool decided);
+  int dense_first_failures_ = 0;  // tries failed in a row
+  int dense_first_passed_ = 0;    // LCPs passed by since the last try
   Lemke lemke_;
   BranchAndBoundLcp complete_;
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <utility>
 
 #include <Eigen/LU>
@@ -153,16 +154,10 @@ ActiveSetEquations::Solution ReducedTangentEquations::solve(const std::vector<Ei
   return std::move(*out);
 }
 
-std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
-    const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update, Check check) {
-  Solution out = start(active);
-  if (active.empty())
-    return out;
-  // N_AA^-1 group by group, and the terms Phi_g N_gg^-1 C_g that describe the tangent.
-  const std::optional<std::vector<Local>> found = locals(active, damping);
-  if (!found)
-    return out;
-  const std::vector<Local>& locals = *found;
+bool ReducedTangentEquations::hold_tangent(const std::vector<Eigen::Index>& active,
+                                           const std::vector<Local>& locals, bool may_update,
+                                           std::optional<TangentUpdate>& update) {
+  // The terms Phi_g N_gg^-1 C_g that describe the tangent.
   std::vector<TangentTerm> terms;
   for (const Local& l : locals) {
     TangentTerm term{group(active[l.first]), {}, {}, l.block};
@@ -174,8 +169,7 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
   }
   // The kept factor, as it is or updated, else the lower triangle of K - Phi_A N_AA^-1 C_A
   // factorized.
-  const std::optional<TangentUpdate> update =
-      may_update ? update_from_kept(tangent_, terms, limits_) : std::optional<TangentUpdate>();
+  update = may_update ? update_from_kept(tangent_, terms, limits_) : std::nullopt;
   if (update && update->p.cols() == 0) {
     ++reused_;
   } else if (update) {
@@ -184,11 +178,38 @@ std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
     const CholmodMatrix& tangent = form_tangent(active, locals);
     tangent_.columns.clear();
     tangent_.terms.reset();
-    if (!factorize(tangent)) {
-      out.ray = mechanism(tangent, active, locals);
-      return out;
-    }
+    if (!factorize(tangent))
+      return false;
     tangent_.terms = std::move(terms);
+  }
+  return true;
+}
+
+std::optional<LinearSolve> ReducedTangentEquations::tangent_solve(
+    const std::vector<Eigen::Index>& active) {
+  const std::optional<std::vector<Local>> found = locals(active, {});
+  auto update = std::make_shared<std::optional<TangentUpdate>>();
+  if (!found || !hold_tangent(active, *found, true, *update))
+    return std::nullopt;
+  return [&tangent = tangent_, update](const Eigen::VectorXd& rhs) {
+    return solve_tangent(tangent, rhs, *update ? &**update : nullptr);
+  };
+}
+
+std::optional<ActiveSetEquations::Solution> ReducedTangentEquations::solve_on(
+    const std::vector<Eigen::Index>& active, const Damping& damping, bool may_update, Check check) {
+  Solution out = start(active);
+  if (active.empty())
+    return out;
+  // N_AA^-1 group by group.
+  const std::optional<std::vector<Local>> found = locals(active, damping);
+  if (!found)
+    return out;
+  const std::vector<Local>& locals = *found;
+  std::optional<TangentUpdate> update;
+  if (!hold_tangent(active, locals, may_update, update)) {
+    out.ray = mechanism(tangent_.matrix, active, locals);
+    return out;
   }
   const TangentUpdate* through = update ? &*update : nullptr;
   const double worst = solve_through(

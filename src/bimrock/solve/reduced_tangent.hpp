@@ -50,6 +50,12 @@ class ReducedTangentEquations final : public SplitLcpEquations {
   /// M_rr = N_rr - phi_r . K^-1 phi_r <= N_rr.
   [[nodiscard]] double diagonal_bound(Eigen::Index row) const override { return n_diagonal_(row); }
 
+  /// The solve of the tangent of the rows `active` (undamped), through the kept factor as it is
+  /// or updated, else factorized into it; nothing where that tangent is not positive definite.
+  /// A preconditioner of a nearby tangent (unsymmetric_tangent.hpp); it holds until the kept
+  /// factor next changes.
+  [[nodiscard]] std::optional<LinearSolve> tangent_solve(const std::vector<Eigen::Index>& active);
+
   /// Numeric factorizations of the tangent so far, the solves that reused a factor as it was,
   /// and those that reused it through a low-rank update (Woodbury).
   [[nodiscard]] int factorizations() const override { return factorizations_; }
@@ -62,6 +68,12 @@ class ReducedTangentEquations final : public SplitLcpEquations {
   [[nodiscard]] std::optional<Solution> solve_on(const std::vector<Eigen::Index>& active,
                                                  const Damping& damping, bool may_update,
                                                  Check check);
+  /// Makes the kept factor serve the tangent of the rows `active` (their `locals`): as it is or
+  /// through a low-rank update (`update`, if `may_update` and one serves), else factorized anew;
+  /// false where that tangent is not positive definite (it is then in TangentFactor::matrix).
+  [[nodiscard]] bool hold_tangent(const std::vector<Eigen::Index>& active,
+                                  const std::vector<Local>& locals, bool may_update,
+                                  std::optional<TangentUpdate>& update);
   /// K - Phi_A N_AA^-1 C_A (lower triangle), formed in TangentFactor::matrix.
   [[nodiscard]] const CholmodMatrix& form_tangent(const std::vector<Eigen::Index>& active,
                                                   const std::vector<Local>& locals);

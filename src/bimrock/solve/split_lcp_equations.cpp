@@ -121,11 +121,10 @@ Eigen::VectorXd SplitLcpEquations::damping_terms(const std::vector<Eigen::Index>
   return d;
 }
 
-double SplitLcpEquations::solve_through(
-    const std::vector<Eigen::Index>& active, const std::vector<Local>& locals,
-    const Damping& damping, Check check,
-    const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& tangent_solve,
-    Solution& out) const {
+double SplitLcpEquations::solve_through(const std::vector<Eigen::Index>& active,
+                                        const std::vector<Local>& locals, const Damping& damping,
+                                        Check check, const LinearSolve& tangent_solve,
+                                        Solution& out) const {
   // z_A with M_AA z_A = -v_A through the tangent: S x = -Phi_A N_AA^-1 v_A, then
   // z_A = N_AA^-1 (C_A x - v_A), added to out.z; x is the last solve's, then as measured.
   Eigen::VectorXd x;

@@ -24,6 +24,9 @@
 
 namespace bimrock {
 
+/// x = A^-1 b for some tangent A (a factor's solve, or an iterative one).
+using LinearSolve = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
+
 /// The sparse parts of the increment LCP (eqs. 24, 28), all in the unknowns of S (K, or K
 /// condensed) and the LCP's rows. The rows of a group (the modes of one yield point) are
 /// consecutive.
@@ -101,8 +104,7 @@ class SplitLcpEquations : public ActiveSetEquations {
   /// LCP's own residual where it misses kSolveAccuracy, and the worst relative residual of the
   /// active rows is returned.
   double solve_through(const std::vector<Eigen::Index>& active, const std::vector<Local>& locals,
-                       const Damping& damping, Check check,
-                       const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& tangent_solve,
+                       const Damping& damping, Check check, const LinearSolve& tangent_solve,
                        Solution& out) const;
   /// Measures out.z with S's factor (x = S^-1 Phi z, then out.w and out.w_scale) and returns
   /// the worst relative residual of the active rows' equations (M_AA + D) z_A + q_A - D center_A
