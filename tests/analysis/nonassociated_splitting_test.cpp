@@ -6,7 +6,8 @@
 // (SolverTuning::splitting = false, then the dense routes) and once split into associated ones
 // whose active sets are tried on the LCP (the default): the carried stage factors, the monitor's
 // displacement and the collapse bracket must agree, and the splitting must have solved some of
-// the increments itself. The same for the dense active block tried first.
+// the increments itself. The same for the dense active block tried first, and for GMRES on the
+// non-symmetric tangent against its LU.
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
@@ -49,6 +50,18 @@ TEST(NonAssociatedSplitting, TheDenseBlockFirstGivesTheSameAnalysis) {
   testing::expect_same_analysis(tangent, dense_first);
   EXPECT_LT(total(dense_first, &IncrementRecord::tangent_factorizations),
             total(tangent, &IncrementRecord::tangent_factorizations));
+}
+
+// GMRES on the non-symmetric tangent, preconditioned by the associated form's factor (the
+// default), against the LU alone: the same analysis, with fewer factorizations (the LU's and
+// the preconditioner's Cholesky together).
+TEST(NonAssociatedSplitting, GmresOnTheTangentGivesTheSameAnalysisAsTheLu) {
+  const PlasticResult lu =
+      abutment_without_dilation({.solver = {.iterative_tangent = false, .dense_first_rows = 0}});
+  const PlasticResult gmres = abutment_without_dilation({.solver = {.dense_first_rows = 0}});
+  testing::expect_same_analysis(lu, gmres);
+  EXPECT_LT(total(gmres, &IncrementRecord::tangent_factorizations),
+            total(lu, &IncrementRecord::tangent_factorizations));
 }
 
 }  // namespace

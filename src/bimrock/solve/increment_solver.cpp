@@ -133,6 +133,10 @@ SplittingResult splitting_on_tangent(const YieldSystem& along_flow, LcpOnZone& s
 /// proposal's equations, one more lets a row or two that it missed settle.
 constexpr int kProposalSteps = 2;
 
+/// Failed tries of the dense active block first in a row after which it is tried only on every
+/// SolverTuning::dense_first_period-th LCP.
+constexpr int kDenseFirstFailures = 3;
+
 bool decided(const LcpResult& r) {
   return r.status == LcpStatus::solved || r.status == LcpStatus::no_solution;
 }
@@ -146,22 +150,8 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
       active_set_(ActiveSetOptions{.max_iterations = tuning.active_set_iterations,
                                    .interrupt_after = tuning.interrupt_after}),
       proposal_check_(
-          ActiveSetOptions{.max_iterations = kProposalSteps, .murty_after_cycle = false}) {}
-
-bool IncrementSolver::try_dense_first() {
-  constexpr int kFailuresBeforePeriod = 3;
-  if (dense_first_failures_ < kFailuresBeforePeriod)
-    return true;
-  if (++dense_first_passed_ < tuning_.dense_first_period)
-    return false;
-  dense_first_passed_ = 0;
-  return true;
-}
-
-void IncrementSolver::tried_dense_first(bool decided) {
-  dense_first_failures_ = decided ? 0 : dense_first_failures_ + 1;
-  dense_first_passed_ = 0;
-}
+          ActiveSetOptions{.max_iterations = kProposalSteps, .murty_after_cycle = false}),
+      dense_first_(kDenseFirstFailures, tuning.dense_first_period) {}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
                                          bool stop_unsolved, Thoroughness thoroughness,
@@ -204,11 +194,11 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
   // goes on.
   bool dense_tried = false;
   if (out.on_tangent && expected_active < tuning_.dense_first_rows && !on_zone.symmetric() &&
-      try_dense_first()) {
+      dense_first_.try_now()) {
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
     dense_tried = true;
-    tried_dense_first(decided(r));
+    dense_first_.tried(decided(r));
     if (decided(r)) {
       out.on_tangent = false;
       return finish(r.status == LcpStatus::solved ? Outcome::solved : Outcome::no_solution, r);
@@ -249,7 +239,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
         }
       }
       UnsymmetricTangentEquations::Preconditioner preconditioner;
-      if (symmetric_tangent)
+      if (symmetric_tangent && tuning_.iterative_tangent)
         preconditioner = [&](const std::vector<Eigen::Index>& active) {
           return symmetric_tangent->tangent_solve(active);
         };

@@ -4,10 +4,11 @@
 /// not decide. Behind it (docs/solution-strategy.md):
 /// - the stiffness the LCP is solved on: K, or K condensed onto a zone (stiffness_zones.hpp);
 /// - the primal-dual active-set method, warm-started, on the sparse reduced tangent when many
-///   rows are active (Cholesky for associated flow, LU otherwise: a non-associated LCP is first
-///   split into associated ones, whose active sets are tried on it, symmetric_splitting.hpp,
-///   unless the dense active block solves it first where few rows are active), else on the
-///   dense active block (only the columns of active rows are formed);
+///   rows are active (Cholesky for associated flow; otherwise GMRES preconditioned by the
+///   associated form's factor, else LU: a non-associated LCP is first split into associated
+///   ones, whose active sets are tried on it, symmetric_splitting.hpp, unless the dense active
+///   block solves it first where few rows are active), else on the dense active block (only the
+///   columns of active rows are formed);
 /// - where it fails, Lemke on a working set of rows, then on the whole matrix;
 /// - last, branch and bound on the complementary pairs, which decides every LCP.
 #include <vector>
@@ -19,6 +20,7 @@
 #include <bimrock/solve/branch_and_bound_lcp.hpp>
 #include <bimrock/solve/increment_lcp.hpp>
 #include <bimrock/solve/lemke.hpp>
+#include <bimrock/solve/retry_schedule.hpp>
 #include <bimrock/solve/stiffness_zones.hpp>
 
 namespace bimrock {
@@ -45,6 +47,9 @@ struct SolverTuning {
   /// A non-associated LCP on the reduced tangent is first split into associated ones, whose
   /// active sets are tried on it (symmetric_splitting.hpp); false: the block rule alone.
   bool splitting = true;
+  /// The non-symmetric tangent of a non-associated LCP is first solved by GMRES preconditioned
+  /// by the associated form's factor (unsymmetric_tangent.hpp); false: LU always.
+  bool iterative_tangent = true;
   /// A non-symmetric LCP that the reduced tangent would serve, with fewer rows expected active
   /// than this, is tried on the dense active block first (the splitting solves tens of
   /// associated-form LCPs, the block's LU costs the cube of its rows). 0: never.
@@ -128,12 +133,7 @@ class IncrementSolver {
   StiffnessZones zones_;
   ActiveSetLcp active_set_;
   ActiveSetLcp proposal_check_;  // tries the active sets the splitting proposes
-  /// Whether the dense active block is tried first on an LCP that it would serve (the period
-  /// after failures, SolverTuning::dense_first_period), and what came of a try.
-  [[nodiscard]] bool try_dense_first();
-  void tried_dense_first(bool decided);
-  int dense_first_failures_ = 0;  // tries failed in a row
-  int dense_first_passed_ = 0;    // LCPs passed by since the last try
+  RetrySchedule dense_first_;    // of the dense active block first
   Lemke lemke_;
   BranchAndBoundLcp complete_;
 };
