@@ -10,7 +10,7 @@ namespace bimrock {
 
 namespace {
 
-/// GMRES on the tangent: at most this many iterations (without restarts: it converges in 40-50
+/// GMRES on the tangent: at most this many iterations (without restarts: it converges in 28-47
 /// on the associated form's tangent), to this relative residual of the preconditioned equations.
 constexpr int kGmresIterations = 80;
 constexpr double kGmresTolerance = 1e-12;
