@@ -104,13 +104,13 @@ class LcpOnZone final : public LcpColumns {
 };
 
 // The splitting (symmetric_splitting.hpp) of a non-associated LCP on the reduced tangent:
-// M = M~ + E, M~ (`symmetric_part`, with q = 0) the LCP of the rows along the flow, solved by
-// the symmetric route (Cholesky, the kept factor's updates). The flow's columns S^-1 Phi are
+// M = M~ + E, M~ the LCP of the rows along the flow (`symmetric_part`, with q = 0), solved by
+// the symmetric route (Cholesky, the kept factor's updates) on `symmetric_tangent`, the
+// equations of `symmetric_split`, whose q each inner LCP sets. The flow's columns S^-1 Phi are
 // the same in both.
-SplittingResult splitting_on_tangent(const YieldSystem& along_flow, LcpOnZone& symmetric_part,
-                                     LcpOnZone& on_zone, const std::vector<YieldPoint>& points,
-                                     FlexibilityColumns& columns,
-                                     const CondensedStiffness& stiffness, TangentFactor& tangent,
+SplittingResult splitting_on_tangent(LcpOnZone& on_zone, LcpOnZone& symmetric_part,
+                                     SplitLcp& symmetric_split,
+                                     ReducedTangentEquations& symmetric_tangent,
                                      ActiveSetLcp& active_set, const ActiveSetProposal& propose,
                                      const Eigen::VectorXd& start, const Eigen::VectorXd* warm,
                                      IncrementSolution& out) {
@@ -118,12 +118,9 @@ SplittingResult splitting_on_tangent(const YieldSystem& along_flow, LcpOnZone& s
     return Eigen::VectorXd(on_zone.times(z) - symmetric_part.times(z));
   };
   const SymmetricLcpSolve solve = [&](const Eigen::VectorXd& q, const Eigen::VectorXd* active) {
-    LcpOnZone inner(along_flow, points, columns, q, {}, nullptr, {});
-    const SplitLcp split = inner.split(stiffness.lower());
-    ReducedTangentEquations equations(split, stiffness.factor(), tangent);
-    LcpResult r = active_set.solve(equations, active, nullptr);
+    symmetric_split.q = q;
+    LcpResult r = active_set.solve(symmetric_tangent, active, nullptr);
     out.active_set_iterations += r.steps;
-    out.tangent_factorizations += equations.factorizations();
     return r;
   };
   return solve_by_splitting(on_zone.q(), remainder, solve, propose, start, warm);
@@ -216,7 +213,8 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     std::optional<SplitLcp> symmetric_split;
     std::optional<ReducedTangentEquations> symmetric_tangent;
     std::unique_ptr<ActiveSetEquations> equations;
-    // The tangent's factorizations, the preconditioner's among them.
+    // The tangent's factorizations, the preconditioner's and the splitting's inner LCPs' among
+    // them.
     const auto factorizations = [&] {
       return equations->factorizations() +
              (symmetric_tangent ? symmetric_tangent->factorizations() : 0);
@@ -228,7 +226,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     } else {
       // The LCP of the rows along the flow, where it is symmetric (not for a softening law
       // whose coupling of the modes is not): its tangent preconditions the non-symmetric one,
-      // and its LCPs are the splitting's inner ones.
+      // and its equations, at the right-hand sides the splitting sets, are the inner LCPs.
       if (lcp.along_flow) {
         along_flow.emplace(stiffness.local(*lcp.along_flow));
         symmetric_part.emplace(*along_flow, lcp.points, columns, Eigen::VectorXd::Zero(m),
@@ -256,9 +254,9 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
           r = std::move(tried);
           return true;
         };
-        const SplittingResult splitting = splitting_on_tangent(
-            *along_flow, *symmetric_part, on_zone, lcp.points, columns, stiffness, zones_.tangent(),
-            active_set_, propose, lcp.gap_old, warm, out);
+        const SplittingResult splitting =
+            splitting_on_tangent(on_zone, *symmetric_part, *symmetric_split, *symmetric_tangent,
+                                 active_set_, propose, lcp.gap_old, warm, out);
         out.tangent_factorizations += factorizations();
         if (splitting.solved)
           return finish(Outcome::solved, r);
