@@ -6,8 +6,8 @@
 // (SolverTuning::splitting = false, then the dense routes) and once split into associated ones
 // whose active sets are tried on the LCP (the default): the carried stage factors, the monitor's
 // displacement and the collapse bracket must agree, and the splitting must have solved some of
-// the increments itself. The same for the dense active block tried first, and for GMRES on the
-// non-symmetric tangent against its LU.
+// the increments itself. The same for the dense active block tried first, for GMRES on the
+// non-symmetric tangent against its LU, and for the splitting's Newton steps against none.
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
@@ -62,6 +62,18 @@ TEST(NonAssociatedSplitting, GmresOnTheTangentGivesTheSameAnalysisAsTheLu) {
   testing::expect_same_analysis(lu, gmres);
   EXPECT_LT(total(gmres, &IncrementRecord::tangent_factorizations),
             total(lu, &IncrementRecord::tangent_factorizations));
+}
+
+// The splitting's Newton steps (the default) against proposals that are dropped where they fail:
+// the same analysis, in fewer active-set iterations (157 against 166: the inner LCPs' steps and
+// the proposals').
+TEST(NonAssociatedSplitting, TheNewtonStepsGiveTheSameAnalysis) {
+  const PlasticResult without =
+      abutment_without_dilation({.solver = {.splitting_newton = false, .dense_first_rows = 0}});
+  const PlasticResult newton = abutment_without_dilation({.solver = {.dense_first_rows = 0}});
+  testing::expect_same_analysis(without, newton);
+  EXPECT_LT(total(newton, &IncrementRecord::active_set_iterations),
+            total(without, &IncrementRecord::active_set_iterations));
 }
 
 }  // namespace

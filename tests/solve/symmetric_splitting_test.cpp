@@ -29,7 +29,8 @@ struct Split {
 
   SplittingResult run(const SplittingOptions& options = {}) {
     const SplittingRemainder remainder = [&](const VectorXd& z) { return VectorXd(e * z); };
-    const SymmetricLcpSolve solve = [&](const VectorXd& shifted, const VectorXd* /*warm*/) {
+    const SymmetricLcpSolve solve = [&](const VectorXd& shifted, const VectorXd* /*warm*/,
+                                        bool /*after_newton*/) {
       ++inner_solves;
       return Lemke{}.solve({b, shifted});
     };
@@ -57,32 +58,48 @@ struct Split {
       const VectorXd w = m * z + q;
       const double tol = 1e-10 * (q.cwiseAbs().maxCoeff() + 1.0);
       if (z.minCoeff() < -tol || w.minCoeff() < -tol)
-        return false;
+        return ProposalOutcome{.solved = false, .z = z};
       solution = z;
-      return true;
+      return ProposalOutcome{.solved = true, .z = {}};
     };
     return solve_by_splitting(q, remainder, solve, propose, VectorXd::Zero(q.size()), nullptr,
                               options);
   }
 };
 
+// A planted LCP (q, B + E) of 40 rows: B random symmetric positive definite, E a random matrix
+// (made skew-symmetric where `skew`) scaled to `scale` times B's least eigenvalue, and q such
+// that z* (every third row active) solves it.
+struct PlantedSplit {
+  Split split;
+  VectorXd z_star;
+};
+PlantedSplit planted(unsigned seed, double scale, bool skew) {
+  std::mt19937 rng(seed);
+  const Eigen::Index n = 40;
+  PlantedSplit p;
+  Split& s = p.split;
+  s.b = testing::random_spd(n, rng);
+  const double least = Eigen::SelfAdjointEigenSolver<MatrixXd>(s.b).eigenvalues()(0);
+  s.e = MatrixXd::Random(n, n);
+  if (skew)
+    s.e = MatrixXd(s.e - s.e.transpose());
+  s.e *= scale * least / s.e.norm();
+  p.z_star = VectorXd::Zero(n);
+  VectorXd w_star = VectorXd::Zero(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    (i % 3 == 0 ? p.z_star(i) : w_star(i)) = 1.0 + 0.1 * static_cast<double>(i);
+  s.q = testing::planted_q(s.b + s.e, p.z_star, w_star);
+  return p;
+}
+
 TEST(SymmetricSplitting, FindsThePlantedSolutionOfAWeaklyNonSymmetricLcp) {
   for (unsigned seed = 1; seed <= 5; ++seed) {
-    std::mt19937 rng(seed);
-    const Eigen::Index n = 40;
-    Split s;
-    s.b = testing::random_spd(n, rng);
     // E small against B's least eigenvalue: M = B + E stays positive definite (a P-matrix).
-    const double least = Eigen::SelfAdjointEigenSolver<MatrixXd>(s.b).eigenvalues()(0);
-    s.e = MatrixXd::Random(n, n);
-    s.e *= 0.3 * least / s.e.norm();
-    VectorXd z_star = VectorXd::Zero(n), w_star = VectorXd::Zero(n);
-    for (Eigen::Index i = 0; i < n; ++i)
-      (i % 3 == 0 ? z_star(i) : w_star(i)) = 1.0 + 0.1 * static_cast<double>(i);
-    s.q = testing::planted_q(s.b + s.e, z_star, w_star);
-    const SplittingResult r = s.run();
+    PlantedSplit p = planted(seed, 0.3, false);
+    const SplittingResult r = p.split.run();
     ASSERT_TRUE(r.solved) << seed;
-    EXPECT_LE((s.solution - z_star).cwiseAbs().maxCoeff(), 1e-9) << seed;
+    EXPECT_LE((p.split.solution - p.z_star).cwiseAbs().maxCoeff(), 1e-9) << seed;
     EXPECT_GE(r.proposals, 1) << seed;
     EXPECT_LT(r.iterations, SplittingOptions{}.max_iterations) << seed;
   }
@@ -96,11 +113,11 @@ TEST(SymmetricSplitting, AcceleratesIteratesThatSwapRowsBackAndForth) {
   // with weights 1/2, so y = 0.75, which gives z = 0.25 > 0 and the image 0.375. The residual
   // differences -3 and 1.125 (one row) leave a one-column least squares problem, gamma = 1/8,
   // so y = 0.375 + 1.5 / 8 = 0.5625 and z = 0.4375 > 0: the set {z > 0} held, and its proposal
-  // solves the LCP in the fourth iterate.
+  // solves the LCP in the fourth iterate. (Without Newton steps: the one below.)
   Split s{.b = MatrixXd::Constant(1, 1, 1.0),
           .e = MatrixXd::Constant(1, 1, 1.5),
           .q = VectorXd::Constant(1, -1.0)};
-  const SplittingResult accelerated = s.run();
+  const SplittingResult accelerated = s.run({.newton = false});
   ASSERT_TRUE(accelerated.solved);
   EXPECT_NEAR(s.solution(0), 0.4, 1e-14);
   EXPECT_EQ(accelerated.iterations, 4);
@@ -108,7 +125,8 @@ TEST(SymmetricSplitting, AcceleratesIteratesThatSwapRowsBackAndForth) {
 
   Split plain = s;
   plain.solution = VectorXd();
-  const SplittingResult r = plain.run({.anderson_depth = 0, .damped_after = false});
+  const SplittingResult r =
+      plain.run({.anderson_depth = 0, .damped_after = false, .newton = false});
   EXPECT_FALSE(r.solved);
   EXPECT_EQ(r.proposals, 0);
   EXPECT_EQ(r.iterations, SplittingOptions{}.max_iterations);
@@ -122,10 +140,49 @@ TEST(SymmetricSplitting, DampsTheIteratesWhereTheFirstRunEndsUnsolved) {
   Split s{.b = MatrixXd::Constant(1, 1, 1.0),
           .e = MatrixXd::Constant(1, 1, 1.5),
           .q = VectorXd::Constant(1, -1.0)};
-  const SplittingResult r = s.run({.anderson_depth = 0});
+  const SplittingResult r = s.run({.anderson_depth = 0, .newton = false});
   ASSERT_TRUE(r.solved);
   EXPECT_NEAR(s.solution(0), 0.4, 1e-14);
   EXPECT_GT(r.iterations, SplittingOptions{}.max_iterations);
+}
+
+TEST(SymmetricSplitting, TakesBackANewtonStepThatDoesNotLowerTheResidual) {
+  // The same row, with Newton steps, worked by hand. y = 0 gives z = 1 (residual |1.5 - 0|);
+  // y = 1.5 gives z = 0, which changes one row: proposed. Its equations have no row, so
+  // z_N = 0, w = -1 < 0: not a solution, and the Newton step goes to y = E z_N = 0, whose inner
+  // LCP gives z = 1 again: residual 1.5, not below 0.9 x 1.5. The step is taken back to the
+  // accelerated y = 0.75 (z = 0.25), then y = 0.5625 (z = 0.4375) keeps the set {z > 0}, whose
+  // proposal solves the LCP: four iterates and the inner LCP of the step taken back.
+  Split s{.b = MatrixXd::Constant(1, 1, 1.0),
+          .e = MatrixXd::Constant(1, 1, 1.5),
+          .q = VectorXd::Constant(1, -1.0)};
+  const SplittingResult r = s.run();
+  ASSERT_TRUE(r.solved);
+  EXPECT_NEAR(s.solution(0), 0.4, 1e-14);
+  EXPECT_EQ(r.iterations, 4);
+  EXPECT_EQ(r.proposals, 2);
+  EXPECT_EQ(s.inner_solves, 5);
+}
+
+TEST(SymmetricSplitting, NewtonStepsReachThePlantedSolutionInFewerIterates) {
+  // As the first test, with E skew-symmetric and twenty times B's least eigenvalue: M = B + E
+  // stays positive definite (z.E z = 0), so z* is the only solution, but the iterates converge
+  // slowly, and the proposals' equations, solved on sets that differ from z*'s in a few rows,
+  // step nearer it.
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    PlantedSplit p = planted(seed, 20.0, true);
+    Split& s = p.split;
+    const VectorXd& z_star = p.z_star;
+    Split without = s;
+    const SplittingResult r = s.run();
+    const SplittingResult anderson = without.run({.newton = false});
+    ASSERT_TRUE(r.solved) << seed;
+    ASSERT_TRUE(anderson.solved) << seed;
+    EXPECT_LE((s.solution - z_star).cwiseAbs().maxCoeff(), 1e-9) << seed;
+    EXPECT_LE((without.solution - z_star).cwiseAbs().maxCoeff(), 1e-9) << seed;
+    // 4-6 inner LCPs against 8-13 (seeds 1-5).
+    EXPECT_LT(s.inner_solves, without.inner_solves) << seed;
+  }
 }
 
 TEST(SymmetricSplitting, SaysSoWhereAnInnerLcpHasNoSolution) {

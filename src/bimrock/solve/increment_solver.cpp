@@ -111,24 +111,33 @@ class LcpOnZone final : public LcpColumns {
 SplittingResult splitting_on_tangent(LcpOnZone& on_zone, LcpOnZone& symmetric_part,
                                      SplitLcp& symmetric_split,
                                      ReducedTangentEquations& symmetric_tangent,
-                                     ActiveSetLcp& active_set, const ActiveSetProposal& propose,
-                                     const Eigen::VectorXd& start, const Eigen::VectorXd* warm,
+                                     ActiveSetLcp& active_set, ActiveSetLcp& after_newton,
+                                     const ActiveSetProposal& propose, const Eigen::VectorXd& start,
+                                     const Eigen::VectorXd* warm, bool newton,
                                      IncrementSolution& out) {
   const SplittingRemainder remainder = [&](const Eigen::VectorXd& z) {
     return Eigen::VectorXd(on_zone.times(z) - symmetric_part.times(z));
   };
-  const SymmetricLcpSolve solve = [&](const Eigen::VectorXd& q, const Eigen::VectorXd* active) {
+  const SymmetricLcpSolve solve = [&](const Eigen::VectorXd& q, const Eigen::VectorXd* active,
+                                      bool newton_step) {
     symmetric_split.q = q;
-    LcpResult r = active_set.solve(symmetric_tangent, active, nullptr);
+    LcpResult r =
+        (newton_step ? after_newton : active_set).solve(symmetric_tangent, active, nullptr);
     out.active_set_iterations += r.steps;
     return r;
   };
-  return solve_by_splitting(on_zone.q(), remainder, solve, propose, start, warm);
+  return solve_by_splitting(on_zone.q(), remainder, solve, propose, start, warm,
+                            {.newton = newton});
 }
 
 /// Steps of the active-set method that try an active set the splitting proposes: one solves the
 /// proposal's equations, one more lets a row or two that it missed settle.
 constexpr int kProposalSteps = 2;
+
+/// Steps of the active-set method on an inner LCP of the splitting after a Newton step, which is
+/// taken back where they do not solve it (its remainder can ask more of the frozen strengths
+/// than they have: an LCP without a solution, which the full budget would only confirm).
+constexpr int kAfterNewtonSteps = 15;
 
 /// Failed tries of the dense active block first in a row after which it is tried only on every
 /// SolverTuning::dense_first_period-th LCP.
@@ -148,6 +157,8 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
                                    .interrupt_after = tuning.interrupt_after}),
       proposal_check_(
           ActiveSetOptions{.max_iterations = kProposalSteps, .murty_after_cycle = false}),
+      after_newton_(ActiveSetOptions{.max_iterations = kAfterNewtonSteps,
+                                     .interrupt_after = tuning.interrupt_after}),
       dense_first_(kDenseFirstFailures, tuning.dense_first_period) {}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
@@ -245,18 +256,19 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
                                                                 std::move(preconditioner));
       if (symmetric_tangent && tuning_.splitting) {
         // The splitting proposes active sets, each tried by a step or two of the active-set
-        // method on the LCP itself.
+        // method on the LCP itself; where that does not solve it, its multipliers are the
+        // splitting's Newton step.
         const ActiveSetProposal propose = [&](const Eigen::VectorXd& active) {
           LcpResult tried = proposal_check_.solve(*equations, &active, nullptr);
           out.active_set_iterations += tried.steps;
           if (tried.status != LcpStatus::solved)
-            return false;
+            return ProposalOutcome{.solved = false, .z = std::move(tried.z)};
           r = std::move(tried);
-          return true;
+          return ProposalOutcome{.solved = true, .z = {}};
         };
-        const SplittingResult splitting =
-            splitting_on_tangent(on_zone, *symmetric_part, *symmetric_split, *symmetric_tangent,
-                                 active_set_, propose, lcp.gap_old, warm, out);
+        const SplittingResult splitting = splitting_on_tangent(
+            on_zone, *symmetric_part, *symmetric_split, *symmetric_tangent, active_set_,
+            after_newton_, propose, lcp.gap_old, warm, tuning_.splitting_newton, out);
         out.tangent_factorizations += factorizations();
         if (splitting.solved)
           return finish(Outcome::solved, r);

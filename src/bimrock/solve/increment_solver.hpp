@@ -47,6 +47,9 @@ struct SolverTuning {
   /// A non-associated LCP on the reduced tangent is first split into associated ones, whose
   /// active sets are tried on it (symmetric_splitting.hpp); false: the block rule alone.
   bool splitting = true;
+  /// The splitting takes Newton steps from the active sets it tries and that fail
+  /// (symmetric_splitting.hpp); false: it drops them.
+  bool splitting_newton = true;
   /// The non-symmetric tangent of a non-associated LCP is first solved by GMRES preconditioned
   /// by the associated form's factor (unsymmetric_tangent.hpp); false: LU always.
   bool iterative_tangent = true;
@@ -133,6 +136,7 @@ class IncrementSolver {
   StiffnessZones zones_;
   ActiveSetLcp active_set_;
   ActiveSetLcp proposal_check_;  // tries the active sets the splitting proposes
+  ActiveSetLcp after_newton_;    // the splitting's inner LCPs after a Newton step
   RetrySchedule dense_first_;    // of the dense active block first
   Lemke lemke_;
   BranchAndBoundLcp complete_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <deque>
 #include <limits>
+#include <optional>
 
 #include <Eigen/QR>
 
@@ -17,12 +18,17 @@ class AcceleratedIterates {
   AcceleratedIterates(const SplittingRemainder& remainder, const Eigen::VectorXd& start, int depth)
       : remainder_(remainder), depth_(depth), y_(remainder(start)) {}
 
-  [[nodiscard]] const Eigen::VectorXd& y() const { return y_; }
+  /// Newton steps are taken between these iterates (see run).
+  static constexpr bool kNewtonSteps = true;
 
-  /// After the inner solution z of y: y <- g - dG gamma, with g = E z and gamma the least squares
+  [[nodiscard]] const Eigen::VectorXd& y() const { return y_; }
+  /// The next inner LCP is solved at y instead (a Newton step, or its taking back): the pair
+  /// (y, E z) it gives is as good a difference for the combinations as any other.
+  void jump(const Eigen::VectorXd& y) { y_ = y; }
+
+  /// After the inner solution z of y, g = E z: y <- g - dG gamma, with gamma the least squares
   /// solution of dF gamma = f (dF, dG the differences of consecutive residuals and images).
-  void advance(const Eigen::VectorXd& z, Eigen::Index /*changed*/) {
-    const Eigen::VectorXd g = remainder_(z);
+  void advance(const Eigen::VectorXd& /*z*/, const Eigen::VectorXd& g, Eigen::Index /*changed*/) {
     residuals_.push_back(g - y_);
     images_.push_back(g);
     if (residuals_.size() > static_cast<std::size_t>(depth_) + 1) {
@@ -63,11 +69,15 @@ class DampedIterates {
                  const SplittingOptions& options)
       : remainder_(remainder), options_(options), z_(start), y_(remainder(start)) {}
 
+  /// No Newton steps: this run follows where the accelerated one failed, and keeps near the
+  /// plain iterates.
+  static constexpr bool kNewtonSteps = false;
+
   [[nodiscard]] const Eigen::VectorXd& y() const { return y_; }
 
   /// After the inner solution z, whose active set differs from the last one's in `changed`
   /// rows (the first inner solution is taken whole).
-  void advance(const Eigen::VectorXd& z, Eigen::Index changed) {
+  void advance(const Eigen::VectorXd& z, const Eigen::VectorXd& /*g*/, Eigen::Index changed) {
     if (first_) {
       first_ = false;
     } else {
@@ -94,35 +104,93 @@ class DampedIterates {
   Eigen::Index least_ = std::numeric_limits<Eigen::Index>::max();
 };
 
-/// One run of the splitting, its remainders y_k given by `iterates`.
+/// What one run of the splitting works with.
+struct SplittingProblem {
+  const Eigen::VectorXd& q;
+  const SplittingRemainder& remainder;
+  const SymmetricLcpSolve& solve_symmetric;
+  const ActiveSetProposal& propose;
+  const Eigen::VectorXd* warm;
+  const SplittingOptions& options;
+};
+
+/// A Newton step whose inner LCP is not solved yet: where it turns out unsolved, or its residual
+/// not low enough, the iteration goes back to the remainder and active set it left.
+struct PendingNewtonStep {
+  Eigen::VectorXd y;
+  Eigen::VectorXd active;
+  double residual = 0.0;
+};
+
+/// One run of the splitting, its remainders y_k given by `iterates` (with Newton steps between
+/// them where Iterates::kNewtonSteps and the options ask for them).
 template <class Iterates>
-SplittingResult run(const Eigen::VectorXd& q, const SymmetricLcpSolve& solve_symmetric,
-                    const ActiveSetProposal& propose, const Eigen::VectorXd* warm,
-                    int max_iterations, Iterates iterates) {
+SplittingResult run(const SplittingProblem& p, Iterates iterates) {
+  constexpr bool kNewton = Iterates::kNewtonSteps;
+  const SplittingOptions& options = p.options;
+  const bool newton = kNewton && options.newton;
   SplittingResult out;
-  const Eigen::Index n = q.size();
-  Eigen::VectorXd active = warm ? *warm : Eigen::VectorXd::Zero(n);
+  const Eigen::Index n = p.q.size();
+  Eigen::VectorXd active = p.warm ? *p.warm : Eigen::VectorXd::Zero(n);
   Eigen::VectorXd proposed;  // the last active set tried
-  for (int k = 0; k < max_iterations; ++k) {
-    const LcpResult inner =
-        solve_symmetric(Eigen::VectorXd(q + iterates.y()), k == 0 && !warm ? nullptr : &active);
-    if (inner.status != LcpStatus::solved || inner.z.size() != n)
+  Eigen::VectorXd y = iterates.y();
+  std::optional<PendingNewtonStep> pending;
+  int pause = 0;  // iterates left before the next Newton step
+  for (int k = 0; k < options.max_iterations; ++k) {
+    const LcpResult inner = p.solve_symmetric(
+        Eigen::VectorXd(p.q + y), k == 0 && !p.warm ? nullptr : &active, pending.has_value());
+    const bool inner_solved = inner.status == LcpStatus::solved && inner.z.size() == n;
+    Eigen::VectorXd g;  // E z, for the accelerated iterates (the damped ones form their own)
+    if (kNewton && inner_solved)
+      g = p.remainder(inner.z);
+    if constexpr (kNewton) {
+      if (pending &&
+          (!inner_solved || !((g - y).norm() < options.newton_decrease * pending->residual))) {
+        // The step asked more of the frozen strengths than they have, or did not bring the
+        // iterates nearer the fixed point: back to where it left.
+        y = std::move(pending->y);
+        active = std::move(pending->active);
+        iterates.jump(y);
+        pending.reset();
+        pause = options.newton_pause;
+        continue;
+      }
+      pending.reset();
+    }
+    if (!inner_solved)
       return out;
     out.z = inner.z;
     ++out.iterations;
     const Eigen::VectorXd now = (inner.z.array() > 0.0).cast<double>();
     const auto changed = static_cast<Eigen::Index>((now - active).cwiseAbs().sum());
     active = now;
-    // The active set {i : z_i > 0} held from the last iterate: a proposal (each set once).
-    if (k > 0 && changed == 0 && (proposed.size() != n || active != proposed)) {
+    // The active set {i : z_i > 0} held from the last iterate, or nearly (before a Newton
+    // step): a proposal (each set once).
+    const bool near = newton && pause == 0 && changed <= options.newton_changed_rows;
+    ProposalOutcome tried;
+    if (k > 0 && (changed == 0 || near) && (proposed.size() != n || active != proposed)) {
       proposed = active;
       ++out.proposals;
-      if (propose(active)) {
+      tried = p.propose(active);
+      if (tried.solved) {
         out.solved = true;
         return out;
       }
     }
-    iterates.advance(inner.z, changed);
+    const double residual = kNewton ? (g - y).norm() : 0.0;
+    iterates.advance(inner.z, g, changed);
+    y = iterates.y();
+    pause = std::max(0, pause - 1);
+    if constexpr (kNewton) {
+      if (newton && tried.z.size() == n && tried.z.allFinite()) {
+        // The Newton step: the remainder of the proposal's multipliers (those it took below
+        // zero count as zero, as the inner LCP would hold them).
+        pending = PendingNewtonStep{y, active, residual};
+        y = p.remainder(Eigen::VectorXd(tried.z.cwiseMax(0.0)));
+        iterates.jump(y);
+        active = (tried.z.array() > 0.0).cast<double>();
+      }
+    }
   }
   return out;
 }
@@ -133,14 +201,14 @@ SplittingResult solve_by_splitting(const Eigen::VectorXd& q, const SplittingRema
                                    const SymmetricLcpSolve& solve_symmetric,
                                    const ActiveSetProposal& propose, const Eigen::VectorXd& start,
                                    const Eigen::VectorXd* warm, const SplittingOptions& options) {
-  SplittingResult accelerated = run(q, solve_symmetric, propose, warm, options.max_iterations,
-                                    AcceleratedIterates(remainder, start, options.anderson_depth));
+  const SplittingProblem problem{q, remainder, solve_symmetric, propose, warm, options};
+  SplittingResult accelerated =
+      run(problem, AcceleratedIterates(remainder, start, options.anderson_depth));
   // The first two iterates are plain in both runs: a failure before any combination would
   // come back the same.
   if (accelerated.solved || !options.damped_after || accelerated.iterations < 2)
     return accelerated;
-  SplittingResult damped = run(q, solve_symmetric, propose, warm, options.max_iterations,
-                               DampedIterates(remainder, start, options));
+  SplittingResult damped = run(problem, DampedIterates(remainder, start, options));
   damped.iterations += accelerated.iterations;
   damped.proposals += accelerated.proposals;
   if (damped.z.size() == 0)

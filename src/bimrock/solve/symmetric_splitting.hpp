@@ -27,10 +27,19 @@
 ///
 /// The iterates serve only as proposals: once an iterate keeps the last one's active set, the
 /// caller tries that set on the non-symmetric LCP itself (the active-set method from there, a
-/// step or two, checked), and the first one that solves it ends the iteration. Where an inner
-/// LCP has no solution (near a limit load the frozen part of the yield functions, e.g. the
-/// normal stresses a joint's friction acts on, can leave too little strength for the step) or
-/// no proposal solves the LCP, the method proves nothing.
+/// step or two, checked), and the first one that solves it ends the iteration. In the
+/// accelerated run an iterate that changes at most a few rows of the last one's set is proposed
+/// too, and a proposal that does not solve the LCP is a Newton step on the fixed point
+/// y = E z(y): on the active set A of z(y), z depends on y linearly, and the y of that piece at
+/// which y = E z is E z_N with M_AA z_N = -q_A, the multipliers of the proposal's equations (of
+/// its last step, where that moved to another set). So the next remainder is E max(z_N, 0), its
+/// inner LCP warm-started from the rows z_N holds positive; the step is kept only where that
+/// inner LCP is solved (within a short budget) and its residual |E z - y| falls below 0.9 of the
+/// one it stepped from, else the iteration goes back to the accelerated remainder, and takes no
+/// Newton step for the next two iterates. Where an inner LCP has no solution (near a limit load
+/// the frozen part of the yield functions, e.g. the normal stresses a joint's friction acts on,
+/// can leave too little strength for the step) or no proposal solves the LCP, the method proves
+/// nothing.
 #include <functional>
 
 #include <Eigen/Core>
@@ -50,6 +59,16 @@ struct SplittingOptions {
   /// set than the fewest so far, the relaxation halves, down to least_relaxation.
   int stalled_after = 3;
   double least_relaxation = 0.25;
+  /// The accelerated run's Newton steps (false: proposals only where an iterate keeps the last
+  /// one's active set, and a failed one is dropped).
+  bool newton = true;
+  /// An iterate that changes at most this many rows of the last one's active set is proposed,
+  /// and where the proposal fails, stepped from by Newton.
+  Eigen::Index newton_changed_rows = 10;
+  /// A Newton step is kept where its inner residual falls below this fraction of the last.
+  double newton_decrease = 0.9;
+  /// Iterates after a Newton step taken back before the next one.
+  int newton_pause = 2;
 };
 
 struct SplittingResult {
@@ -61,11 +80,19 @@ struct SplittingResult {
 
 /// E z, for the iterate z.
 using SplittingRemainder = std::function<Eigen::VectorXd(const Eigen::VectorXd& z)>;
-/// Solves the LCP (q, B) warm-started from the rows flagged 1 in `warm` (may be null).
-using SymmetricLcpSolve =
-    std::function<LcpResult(const Eigen::VectorXd& q, const Eigen::VectorXd* warm)>;
-/// Tries the active set flagged 1 in `active` on the LCP (q, M); true: it solved it.
-using ActiveSetProposal = std::function<bool(const Eigen::VectorXd& active)>;
+/// Solves the LCP (q, B) warm-started from the rows flagged 1 in `warm` (may be null);
+/// `after_newton`: at a Newton step's remainder, which is taken back where the LCP is not
+/// solved, so a short budget of iterations is enough.
+using SymmetricLcpSolve = std::function<LcpResult(const Eigen::VectorXd& q,
+                                                  const Eigen::VectorXd* warm, bool after_newton)>;
+/// What trying an active set on the LCP (q, M) gave: whether it solved it, and otherwise the
+/// multipliers of the last equations it solved (empty where it solved none).
+struct ProposalOutcome {
+  bool solved = false;
+  Eigen::VectorXd z;
+};
+/// Tries the active set flagged 1 in `active` on the LCP (q, M).
+using ActiveSetProposal = std::function<ProposalOutcome(const Eigen::VectorXd& active)>;
 
 /// Iterates from z_0 = start (warm: the rows the first inner solve starts active) until a
 /// proposal solves the LCP, an inner LCP is not solved, or the iterations run out.
