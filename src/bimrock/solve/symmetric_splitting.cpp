@@ -16,7 +16,7 @@ namespace {
 class AcceleratedIterates {
  public:
   AcceleratedIterates(const SplittingRemainder& remainder, const Eigen::VectorXd& start, int depth)
-      : remainder_(remainder), depth_(depth), y_(remainder(start)) {}
+      : depth_(depth), y_(remainder(start)) {}
 
   /// Newton steps are taken between these iterates (see run).
   static constexpr bool kNewtonSteps = true;
@@ -53,7 +53,6 @@ class AcceleratedIterates {
   }
 
  private:
-  const SplittingRemainder& remainder_;
   int depth_;
   Eigen::VectorXd y_;
   std::deque<Eigen::VectorXd> residuals_;
