@@ -144,6 +144,9 @@ TEST(SymmetricSplitting, DampsTheIteratesWhereTheFirstRunEndsUnsolved) {
   ASSERT_TRUE(r.solved);
   EXPECT_NEAR(s.solution(0), 0.4, 1e-14);
   EXPECT_GT(r.iterations, SplittingOptions{}.max_iterations);
+  // The damped run's first two iterates (y = 0, then y = 1.5) are the first run's: taken from
+  // it, not solved again.
+  EXPECT_EQ(s.inner_solves, r.iterations - 2);
 }
 
 TEST(SymmetricSplitting, TakesBackANewtonStepThatDoesNotLowerTheResidual) {

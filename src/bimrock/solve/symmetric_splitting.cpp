@@ -4,6 +4,7 @@
 #include <deque>
 #include <limits>
 #include <optional>
+#include <vector>
 
 #include <Eigen/QR>
 
@@ -121,10 +122,16 @@ struct PendingNewtonStep {
   double residual = 0.0;
 };
 
+/// The inner solutions of the first two iterates, which are plain in both runs (y_0 = E start,
+/// y_1 = E z_0): the damped run takes them from the accelerated one instead of solving them again.
+using PlainIterates = std::vector<LcpResult>;
+constexpr std::size_t kPlainIterates = 2;
+
 /// One run of the splitting, its remainders y_k given by `iterates` (with Newton steps between
-/// them where Iterates::kNewtonSteps and the options ask for them).
+/// them where Iterates::kNewtonSteps and the options ask for them). The first inner solutions
+/// are taken from `plain` where it holds them, else solved and added to it.
 template <class Iterates>
-SplittingResult run(const SplittingProblem& p, Iterates iterates) {
+SplittingResult run(const SplittingProblem& p, Iterates iterates, PlainIterates& plain) {
   constexpr bool kNewton = Iterates::kNewtonSteps;
   const SplittingOptions& options = p.options;
   const bool newton = kNewton && options.newton;
@@ -136,8 +143,15 @@ SplittingResult run(const SplittingProblem& p, Iterates iterates) {
   std::optional<PendingNewtonStep> pending;
   int pause = 0;  // iterates left before the next Newton step
   for (int k = 0; k < options.max_iterations; ++k) {
-    const LcpResult inner = p.solve_symmetric(
-        Eigen::VectorXd(p.q + y), k == 0 && !p.warm ? nullptr : &active, pending.has_value());
+    const auto i = static_cast<std::size_t>(k);
+    if (i < kPlainIterates && i == plain.size())
+      plain.push_back(p.solve_symmetric(Eigen::VectorXd(p.q + y),
+                                        k == 0 && !p.warm ? nullptr : &active, false));
+    const LcpResult inner =
+        i < plain.size()
+            ? plain[i]
+            : p.solve_symmetric(Eigen::VectorXd(p.q + y), k == 0 && !p.warm ? nullptr : &active,
+                                pending.has_value());
     const bool inner_solved = inner.status == LcpStatus::solved && inner.z.size() == n;
     Eigen::VectorXd g;  // E z, for the accelerated iterates (the damped ones form their own)
     if (kNewton && inner_solved)
@@ -201,13 +215,14 @@ SplittingResult solve_by_splitting(const Eigen::VectorXd& q, const SplittingRema
                                    const ActiveSetProposal& propose, const Eigen::VectorXd& start,
                                    const Eigen::VectorXd* warm, const SplittingOptions& options) {
   const SplittingProblem problem{q, remainder, solve_symmetric, propose, warm, options};
+  PlainIterates plain;
   SplittingResult accelerated =
-      run(problem, AcceleratedIterates(remainder, start, options.anderson_depth));
+      run(problem, AcceleratedIterates(remainder, start, options.anderson_depth), plain);
   // The first two iterates are plain in both runs: a failure before any combination would
   // come back the same.
   if (accelerated.solved || !options.damped_after || accelerated.iterations < 2)
     return accelerated;
-  SplittingResult damped = run(problem, DampedIterates(remainder, start, options));
+  SplittingResult damped = run(problem, DampedIterates(remainder, start, options), plain);
   damped.iterations += accelerated.iterations;
   damped.proposals += accelerated.proposals;
   if (damped.z.size() == 0)

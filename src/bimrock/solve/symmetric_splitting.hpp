@@ -23,7 +23,8 @@
 /// out, the splitting starts again, damped instead (after three iterates in a row that change
 /// no fewer rows than the fewest so far, each moves half as far towards its inner solution as
 /// before, down to a quarter: z_k+1 = z_k + omega (z^ - z_k)), which is slower but keeps its
-/// iterates among the plain ones' neighbours.
+/// iterates among the plain ones' neighbours. Its first two iterates are the accelerated run's
+/// (both runs start plain), whose inner solutions it reuses.
 ///
 /// The iterates serve only as proposals: once an iterate keeps the last one's active set, the
 /// caller tries that set on the non-symmetric LCP itself (the active-set method from there, a
