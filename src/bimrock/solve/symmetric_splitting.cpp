@@ -144,14 +144,13 @@ SplittingResult run(const SplittingProblem& p, Iterates iterates, PlainIterates&
   int pause = 0;  // iterates left before the next Newton step
   for (int k = 0; k < options.max_iterations; ++k) {
     const auto i = static_cast<std::size_t>(k);
-    if (i < kPlainIterates && i == plain.size())
-      plain.push_back(p.solve_symmetric(Eigen::VectorXd(p.q + y),
-                                        k == 0 && !p.warm ? nullptr : &active, false));
+    const bool known = i < plain.size();
     const LcpResult inner =
-        i < plain.size()
-            ? plain[i]
-            : p.solve_symmetric(Eigen::VectorXd(p.q + y), k == 0 && !p.warm ? nullptr : &active,
-                                pending.has_value());
+        known ? plain[i]
+              : p.solve_symmetric(Eigen::VectorXd(p.q + y), k == 0 && !p.warm ? nullptr : &active,
+                                  pending.has_value());
+    if (!known && i < kPlainIterates)
+      plain.push_back(inner);
     const bool inner_solved = inner.status == LcpStatus::solved && inner.z.size() == n;
     Eigen::VectorXd g;  // E z, for the accelerated iterates (the damped ones form their own)
     if (kNewton && inner_solved)
