@@ -30,11 +30,13 @@ class LcpOnZone final : public LcpColumns {
   }
   // M v with one back-solve (no column of M formed).
   [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& v) {
+    return times(v, y_.combine(sys_, v));
+  }
+  // (M - M_b) v for an LCP M_b of the same rows and the same flow Phi (the splitting's
+  // remainder): the flow's displacement y = S^-1 Phi v is the same in both, one back-solve.
+  [[nodiscard]] Eigen::VectorXd minus_times(const LcpOnZone& b, const Eigen::VectorXd& v) {
     const Eigen::VectorXd y = y_.combine(sys_, v);
-    Eigen::VectorXd out = sys_.n * v - sys_.c * y;
-    if (control_)
-      out += control_term_ * control_->dot(y);
-    return out;
+    return times(v, y) - b.times(v, y);
   }
   [[nodiscard]] Eigen::Index size() const override { return sys_.size(); }
   // The modes of one yield point: at most 2 independent at a joint point (sigma_n, tau), 3 at a
@@ -93,6 +95,14 @@ class LcpOnZone final : public LcpColumns {
   }
 
  private:
+  // M v given the flow's displacement y = S^-1 Phi v.
+  [[nodiscard]] Eigen::VectorXd times(const Eigen::VectorXd& v, const Eigen::VectorXd& y) const {
+    Eigen::VectorXd out = sys_.n * v - sys_.c * y;
+    if (control_)
+      out += control_term_ * control_->dot(y);
+    return out;
+  }
+
   const YieldSystem& sys_;
   const std::vector<YieldPoint>& points_;
   FlexibilityColumns& y_;
@@ -116,7 +126,7 @@ SplittingResult splitting_on_tangent(LcpOnZone& on_zone, LcpOnZone& symmetric_pa
                                      const Eigen::VectorXd* warm, bool newton,
                                      IncrementSolution& out) {
   const SplittingRemainder remainder = [&](const Eigen::VectorXd& z) {
-    return Eigen::VectorXd(on_zone.times(z) - symmetric_part.times(z));
+    return on_zone.minus_times(symmetric_part, z);
   };
   const SymmetricLcpSolve solve = [&](const Eigen::VectorXd& q, const Eigen::VectorXd* active,
                                       bool newton_step) {
