@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/reference/reference_cases.hpp>
 
 #include "support/degrees.hpp"
 #include "support/incline_case.hpp"
@@ -47,6 +48,32 @@ TEST(AssociatedBound, ProvesTheNonAssociatedSlideOfABlockAtItsClosedForm) {
   EXPECT_GE(r.collapse->failed * push.norm(), up * (1.0 - 1e-6));
   EXPECT_LE(r.collapse->failed - r.collapse->carried,
             2.0 * PlasticOptions{}.bracket_tolerance * r.collapse->failed);
+}
+
+// The abutment of `bimrock bench` with joints of no dilation, its load raised in 50 steps: near
+// 0.831 of the load no step is solved nor proven to fail, and the trial to the stage's end is
+// what can still prove the collapse. Its first round holds the points of a step of 0.17; the
+// associated increment solved on them violates points outside them, which the proof needs: a
+// next round holds them, and the proof comes. Expected numbers (Radenkovic's first theorem): an
+// associated certificate proves no load below the associated limit load, so the upper end of the
+// bracket is not below the associated analysis's lower end (here, the same mechanism: its upper
+// end), and no flow rule carries a load past that analysis's upper end.
+TEST(AssociatedBound, TheTrialToTheStagesEndGetsThePointsItsProofNeeds) {
+  const PlasticResult associated = run_plastic_analysis(
+      build_model(abutment_case(100, 25, 1.2 * abutment_collapse_shear())), {}, {}, {});
+  ASSERT_TRUE(associated.collapse.has_value());
+  const PlasticResult r = run_plastic_analysis(
+      build_model(abutment_case(100, 50, 1.2 * abutment_collapse_shear(), JointFlow::no_dilation)),
+      {}, {}, {});
+  ASSERT_FALSE(r.stopped.has_value()) << r.stopped->reason;
+  ASSERT_TRUE(r.collapse.has_value());
+  EXPECT_TRUE(r.collapse->undecided_inside);  // between the two limit loads
+  EXPECT_FALSE(r.collapse->mechanism.empty());
+  const double tolerance = PlasticOptions{}.bracket_tolerance;
+  EXPECT_GE(r.collapse->failed, associated.collapse->carried);
+  EXPECT_NEAR(r.collapse->failed, associated.collapse->failed,
+              tolerance * associated.collapse->failed);
+  EXPECT_LE(r.collapse->carried, associated.collapse->failed);
 }
 
 }  // namespace

@@ -166,7 +166,7 @@ TEST(LoadStepping, CutsLeftUndecidedLookForAProofUpToTheStagesEnd) {
   EXPECT_LE(out.carried, kCollapse);
   EXPECT_GT(out.carried, 0.999 * kCollapse);  // the cuts' budget spent carrying towards F
   EXPECT_NEAR(out.failed, kProvenAbove, 1e-12);
-  EXPECT_EQ(s.asked.back(), Thoroughness::quick);  // the trial to the stage's end
+  EXPECT_EQ(s.asked.back(), Thoroughness::proof);  // the trial to the stage's end
   EXPECT_NEAR(s.tried.back(), 1.0 - out.carried, 1e-15);
 
   // Without the stage's end, the same cuts stop undecided.

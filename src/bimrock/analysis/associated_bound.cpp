@@ -6,7 +6,7 @@ namespace bimrock {
 
 AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s,
                                  const std::vector<int>& candidates, const YieldSystem& sys,
-                                 const IncrementLcp& lcp, IncrementSolver& solver) {
+                                 const IncrementLcp& lcp, IncrementSolver& solver, bool want_flow) {
   AssociatedBound bound;
   if (lcp.control || sys.size() == 0 || follows_associated_flow(sys))
     return bound;
@@ -24,8 +24,12 @@ AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s
   Eigen::VectorXd r;
   if (a.outcome == Outcome::no_solution && a.ray.size() == sys.size())
     r = a.ray;
-  else if (a.outcome == Outcome::solved && a.z.size() == sys.size())
-    r = (a.z - lcp.gap_old).cwiseMax(0.0);
+  else if (a.outcome == Outcome::solved && a.z.size() == sys.size()) {
+    const Eigen::VectorXd lambda = a.z - lcp.gap_old;
+    if (want_flow)
+      bound.flow_du = ctx.k.solve(Eigen::VectorXd(associated.phi * lambda));
+    r = lambda.cwiseMax(0.0);
+  }
   if (r.size() == 0 || !(r.maxCoeff() > 0.0))
     return bound;
   r /= r.maxCoeff();

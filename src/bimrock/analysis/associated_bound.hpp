@@ -27,15 +27,20 @@ struct AssociatedBound {
   IncrementSolution associated;  ///< the associated increment's solve (its work is the trial's)
   Eigen::VectorXd ray;           ///< proven: the associated mechanism's multipliers (>= 0, max 1)
   double proven_fraction = 1.0;  ///< proven: the least fraction of the step proven to fail
+  /// Not proven, the associated increment solved, and asked for: the displacements of its flow,
+  /// K^-1 Phi_a lambda_a (with the step's load's, those of its state). Else empty.
+  Eigen::VectorXd flow_du;
   [[nodiscard]] bool proven() const { return ray.size() > 0; }
 };
 
 /// The proof that the increment `lcp` (rows `sys`, of the yield points `candidates` at state s)
 /// has no solution, from the associated flow rule. Not proven where its rows follow associated
 /// flow already (nothing is solved then), under displacement control, or where the associated
-/// increment has a solution or its certificate does not hold on `lcp`.
+/// increment has a solution or its certificate does not hold on `lcp`. `want_flow`: where the
+/// associated increment is solved without a proof, its flow's displacements (flow_du).
 AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s,
                                  const std::vector<int>& candidates, const YieldSystem& sys,
-                                 const IncrementLcp& lcp, IncrementSolver& solver);
+                                 const IncrementLcp& lcp, IncrementSolver& solver,
+                                 bool want_flow = false);
 
 }  // namespace bimrock

@@ -271,17 +271,33 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       // that proof is the answer, and what the pivoting methods find there (in seconds on a
       // large LCP) is a round that fails anyway.
       bool associated_tried = false;
+      // A trial for a proof only, where the associated increment is solved without one: the
+      // points outside the round's rows that its state violates. Its proof may need them: they
+      // join a next round (as they would in an analysis with associated flow).
+      std::vector<int> associated_outside;
+      YieldValues associated_f;
       const auto associated_collapse = [&]() -> std::optional<Trial> {
         if (!non_associated || associated_tried)
           return std::nullopt;
         associated_tried = true;
+        const bool for_proof = thoroughness == Thoroughness::proof;
         AssociatedBound bound =
-            associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver);
+            associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver, for_proof);
         tally(bound.associated, t);
         clock.lap("increments: LCP", "increments: K^-1 Phi columns",
                   bound.associated.columns_seconds);
-        if (!bound.proven())
+        if (!bound.proven()) {
+          if (for_proof && bound.flow_du.size() > 0) {
+            // The points outside keep their plastic state: only their displacements change.
+            AnalysisState at = s;
+            at.u += step * ctx.x_ref + bound.flow_du;
+            const std::vector<int> in = candidates.in_lcp(solver);  // ascending
+            for (int point : check_all_yield_functions(ctx, at, tol, associated_f))
+              if (!std::binary_search(in.begin(), in.end(), point))
+                associated_outside.push_back(point);
+          }
           return std::nullopt;
+        }
         // The mechanism's displacements with the joints' own flow, K^-1 Phi r: with dilation
         // below friction the associated ones would show a joint opening that does not.
         t.proven_fraction = bound.proven_fraction;
@@ -323,7 +339,10 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       if (solution.outcome == Outcome::undecided) {
         if (std::optional<Trial> proven = associated_collapse())
           return std::move(*proven);
-        return t;  // failed: the caller cuts the step
+        if (associated_outside.empty())
+          return t;  // failed: the caller cuts the step
+        candidates.require(associated_outside, associated_f, solver);
+        continue;
       }
       z = solution.z;
     }

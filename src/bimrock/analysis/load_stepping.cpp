@@ -130,7 +130,7 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   // stand further up, where the load fails whatever the flow.
   if (!proven && remaining > 0.0 && options.stage_end && *options.stage_end > out.carried) {
     const double reach = *options.stage_end - out.carried;
-    const Trial far = try_step(reach, Thoroughness::quick);
+    const Trial far = try_step(reach, Thoroughness::proof);
     if (far.status == Trial::Status::collapse) {
       proven = out.carried + reach * far.proven_fraction;
       out.failure = far;

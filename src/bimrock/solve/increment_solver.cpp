@@ -284,7 +284,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
           return finish(Outcome::solved, r);
         // Where no proposal solved it, the block rule seldom converges on a non-symmetric LCP
         // this large, and each of its steps costs a factorization: a quick solve ends here.
-        if (thoroughness == Thoroughness::quick)
+        if (thoroughness != Thoroughness::thorough)
           return finish(Outcome::undecided, r);
         if (splitting.proposals > 0) {
           proposed = (splitting.z.array() > 0.0).cast<double>();
@@ -309,7 +309,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
   }
-  if (!decided(r) && thoroughness == Thoroughness::quick && m > tuning_.reduced_tangent_rows)
+  if (!decided(r) && thoroughness != Thoroughness::thorough && m > tuning_.reduced_tangent_rows)
     return finish(Outcome::undecided, r);  // no pivoting on a large LCP
   if (!decided(r) && routes == Routes::up_to_pivoting) {
     out.pivoting_left = true;  // the caller's proof first
