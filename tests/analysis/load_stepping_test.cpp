@@ -175,6 +175,28 @@ TEST(LoadStepping, CutsLeftUndecidedLookForAProofUpToTheStagesEnd) {
   EXPECT_EQ(alone.step(0.25).outcome, SteppedIncrement::Outcome::undecided);
 }
 
+TEST(LoadStepping, WhereTheTrialToTheStagesEndIsUndecidedShorterOnesLookForTheProof) {
+  // As above, but a trial past 0.95 is undecided too (its LCPs too large to decide): the trials
+  // for a proof go half as far each, and the one that reaches 0.807 proves it from 0.8.
+  constexpr double kProvenAbove = 0.8;
+  Structure s{.answer = [](double from, double step) {
+    const double reach = from + step;
+    if (reach <= kCollapse)
+      return carried_to(reach);
+    if (reach <= kProvenAbove || reach > 0.95)
+      return failed();
+    return collapsed((kProvenAbove - from) / step);
+  }};
+  s.factor = 0.5;
+  const SteppedIncrement out = s.step(0.25, {.stage_end = 1.0});
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_TRUE(out.undecided_inside);
+  EXPECT_NEAR(out.failed, kProvenAbove, 1e-12);
+  ASSERT_GE(s.tried.size(), 2u);
+  EXPECT_NEAR(s.tried.back(), (1.0 - out.carried) / 2.0, 1e-15);  // the second trial for it
+  EXPECT_EQ(s.asked.back(), Thoroughness::proof);
+}
+
 TEST(LoadStepping, ANumericalFailureIsCutAndTheRestCarriedNotTakenForACollapse) {
   // Steps longer than 0.1 fail numerically; everything below F carries.
   Structure s{.answer = [](double from, double step) {

@@ -22,9 +22,10 @@ struct SteppingOptions {
   /// tolerance of zero load is an instability under the first load, not a bracket.
   bool first_load = false;
   /// Load control: the stage factor at the stage's end. Where the cuts of a step end undecided
-  /// without a proof, one trial from the load carried to there looks for a proof above (a
-  /// certificate, or associated flow's for non-associated flow: docs/formulation.md); found,
-  /// the collapse is bracketed, with undecided trials inside. Empty: none.
+  /// without a proof, trials from the load carried look for a proof above (a certificate, or
+  /// associated flow's for non-associated flow: docs/formulation.md), the first to there, each
+  /// next one half as far; found, the collapse is bracketed, with undecided trials inside.
+  /// Empty: none.
   std::optional<double> stage_end{};
 };
 

@@ -95,8 +95,8 @@ struct IncrementSolution {
 /// splitting finds no solution ends there, and the dense routes take only LCPs of up to
 /// reduced_tangent_rows rows, where they cost no more than the tangent route. Quick serves the
 /// trials whose undecided answer bounds nothing: those inside a collapse bracket already proven.
-/// Proof: quick, for a trial made only to find a proof that the step fails (solve_increment()
-/// gives the proof the rounds it needs); the solve itself is quick.
+/// Proof: a trial made only to find a proof that the step fails, solved as quick
+/// (solve_increment() gives the associated proof the rounds it needs).
 enum class Thoroughness { thorough, quick, proof };
 
 /// Which routes a solve takes: all of them, those before the pivoting methods (Lemke, branch
