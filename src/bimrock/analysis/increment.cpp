@@ -281,8 +281,8 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
           return std::nullopt;
         associated_tried = true;
         const bool for_proof = thoroughness == Thoroughness::proof;
-        AssociatedBound bound =
-            associated_bound(ctx, s, candidates.in_lcp(solver), sys, lcp, solver, for_proof);
+        const std::vector<int> in_lcp = candidates.in_lcp(solver);  // ascending
+        AssociatedBound bound = associated_bound(ctx, s, in_lcp, sys, lcp, solver, for_proof);
         tally(bound.associated, t);
         clock.lap("increments: LCP", "increments: K^-1 Phi columns",
                   bound.associated.columns_seconds);
@@ -291,9 +291,8 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
             // The points outside keep their plastic state: only their displacements change.
             AnalysisState at = s;
             at.u += step * ctx.x_ref + bound.flow_du;
-            const std::vector<int> in = candidates.in_lcp(solver);  // ascending
             for (int point : check_all_yield_functions(ctx, at, tol, associated_f))
-              if (!std::binary_search(in.begin(), in.end(), point))
+              if (!std::binary_search(in_lcp.begin(), in_lcp.end(), point))
                 associated_outside.push_back(point);
           }
           return std::nullopt;
