@@ -39,9 +39,15 @@ class QuietGlpk {
   int old_;
 };
 
+/// The largest LP solved in exact rational arithmetic. The rationals of a dense LP's basis grow
+/// with its size: on 18 rows glp_exact takes milliseconds, on 144 rows (a 14-block structure)
+/// one call ran for minutes.
+constexpr Index kExactRows = 40;
+
 /// Solves p from its current basis by the primal simplex; where that fails (a degenerate LP
 /// can stall it to its iteration limit, or round-off spoil its basis), by the dual simplex from
-/// a fresh basis, and last in exact rational arithmetic (glp_exact). False if all fail.
+/// a fresh basis, and last, on LPs of at most kExactRows rows, in exact rational arithmetic
+/// (glp_exact). False if all fail.
 bool simplex(glp_prob* p, Index n) {
   glp_smcp parm = simplex_settings(n);
   if (glp_simplex(p, &parm) == 0)
@@ -50,6 +56,8 @@ bool simplex(glp_prob* p, Index n) {
   parm.meth = GLP_DUALP;
   if (glp_simplex(p, &parm) == 0)
     return true;
+  if (n > kExactRows)
+    return false;
   glp_std_basis(p);
   return glp_exact(p, &parm) == 0;
 }
