@@ -17,6 +17,7 @@
 
 #include "support/cases.hpp"
 #include "support/degrees.hpp"
+#include "support/support_reaction.hpp"
 
 namespace bimrock {
 namespace {
@@ -98,22 +99,6 @@ Vec2 applied_force(const CaseSpec& c, const Model& model, int stage, double fact
   return total;
 }
 
-// The force the supports exert on the structure: the stress vector sigma_n n + tau s of each
-// support spring on its block, integrated along the support (both points weigh half its length).
-Vec2 support_reaction(const Model& model, const Eigen::VectorXd& u, const PlasticParts& plastic) {
-  Vec2 total = Vec2::Zero();
-  for (int k = 0; k < static_cast<int>(model.interfaces.size()); ++k) {
-    const Interface& f = model.interfaces[static_cast<std::size_t>(k)];
-    if (!f.is_support())
-      continue;
-    const Vec2 s(-f.normal.y(), f.normal.x());
-    const double w = 0.5 * f.segment.length() * model.settings.thickness;
-    for (const InterfacePointState& p : interface_state(model, k, u, plastic))
-      total += w * (p.stress(0) * f.normal + p.stress(1) * s);
-  }
-  return total;
-}
-
 TEST(RandomStructures, EveryAnalysisCarriesOrProvesItsCollapseInBalance) {
   std::mt19937 rng(2024);
   int collapsed = 0;
@@ -130,7 +115,7 @@ TEST(RandomStructures, EveryAnalysisCarriesOrProvesItsCollapseInBalance) {
         model, PlasticOptions{}, [&](const IncrementRecord& rec, const AnalysisState& state) {
           const PlasticParts plastic{&index, &state.points};
           const Vec2 load = applied_force(rc.spec, model, rec.stage, rec.stage_factor);
-          const Vec2 reaction = support_reaction(model, state.u, plastic);
+          const Vec2 reaction = testing::support_reaction(model, state.u, plastic);
           worst_balance =
               std::max(worst_balance, (load + reaction).norm() / std::max(load.norm(), 1.0));
           YieldValues f;

@@ -2,7 +2,9 @@
 // worked by hand (in each test), planted solutions (q built from a chosen complementary pair),
 // the brute-force enumeration of every complementary basis (an independent oracle, tested in
 // lcp_enumeration_test.cpp), and Farkas certificates checked directly against M and q.
+#include <fstream>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -81,6 +83,18 @@ TEST(BranchAndBoundLcp, SolvesDegenerateCohesionlessLcpsThatLemkeCannot) {
   // Not a property of the method under test, but what makes it needed: on this family Lemke
   // ends on rays that prove nothing (measured: most of the 40).
   EXPECT_GT(lemke_failed, 0);
+}
+
+// The first increment of a wall of dry masonry (running bond, 5 courses of 2 bricks, friction
+// 56 deg, dilation 0) under its weight: 15 joint points, five of them at the apex predicted in
+// tension. The search's sixth vertex is a solution but for one pair: an open point's slip row
+// whose z and w are both zero to round-off, which the solution needs active beside its opening
+// row (an open cohesionless joint carries no shear). The polish finds it.
+TEST(BranchAndBoundLcp, SolvesAWallsFirstIncrementWhoseVertexLeavesASlipRowOut) {
+  std::ifstream in(std::string(BIMROCK_SOURCE_DIR) + "/tests/solve/data/wall_first_increment.lcp");
+  const LcpProblem p = read_lcp(in);
+  ASSERT_EQ(p.size(), 45);
+  expect_solved_measured(p, search(p));
 }
 
 TEST(BranchAndBoundLcp, EmptyPolyhedronGivesAFarkasCertificate) {

@@ -35,35 +35,58 @@ Relative relative(const LcpProblem& p, const Eigen::VectorXd& z) {
   return r;
 }
 
+/// Rounds of the polish's active set: each moves the rows its last correction got wrong.
+constexpr int kPolishRounds = 4;
+
 /// The vertex made exact on its active rows A (z_i the larger of the pair): corrected twice by
 /// the least-norm solution of M_AA dz_A = -(M z + q)_A (M_AA is singular where rows of one
 /// yield point are dependent), which stays next to the vertex; else solved afresh from zero, or
-/// the vertex itself: whichever first satisfies the LCP to the accuracy.
+/// the vertex itself: whichever first satisfies the LCP to the accuracy. Where none does, the
+/// rows the correction violates join A and those it takes below zero leave, and A is tried
+/// again. A vertex at a cohesionless apex has pairs with both z_i and w_i at zero to round-off
+/// (its three yield functions vanish together), and the vertex alone cannot tell which of them
+/// the solution needs active: an open joint point needs a slip row beside its opening row.
 std::optional<LcpResult> polish(const LcpProblem& p, const Eigen::VectorXd& vertex,
                                 const Relative& rel, double accuracy, int steps) {
-  std::vector<Index> active;
+  std::vector<char> in_a(static_cast<std::size_t>(p.size()));
   for (Index i = 0; i < p.size(); ++i)
-    if (rel.z(i) > rel.w(i))
-      active.push_back(i);
+    in_a[static_cast<std::size_t>(i)] = rel.z(i) > rel.w(i);
   Eigen::VectorXd corrected = vertex;
-  Eigen::VectorXd fresh = Eigen::VectorXd::Zero(p.size());
-  if (!active.empty()) {
-    const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> m_aa(p.m(active, active));
-    for (int k = 0; k < 2; ++k) {
-      const Eigen::VectorXd w = p.m * corrected + p.q;
-      const Eigen::VectorXd dz = m_aa.solve(Eigen::VectorXd(w(active)));
-      corrected(active) -= dz;
+  for (int round = 0; round < kPolishRounds; ++round) {
+    std::vector<Index> active;
+    for (Index i = 0; i < p.size(); ++i)
+      if (in_a[static_cast<std::size_t>(i)])
+        active.push_back(i);
+    Eigen::VectorXd fresh = Eigen::VectorXd::Zero(p.size());
+    if (!active.empty()) {
+      const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> m_aa(p.m(active, active));
+      for (int k = 0; k < 2; ++k) {
+        const Eigen::VectorXd w = p.m * corrected + p.q;
+        const Eigen::VectorXd dz = m_aa.solve(Eigen::VectorXd(w(active)));
+        corrected(active) -= dz;
+      }
+      const Eigen::VectorXd z_active = m_aa.solve(Eigen::VectorXd(-p.q(active)));
+      fresh(active) = z_active;
     }
     for (Index i = 0; i < p.size(); ++i)
-      if (rel.z(i) <= rel.w(i))
+      if (!in_a[static_cast<std::size_t>(i)])
         corrected(i) = 0.0;
-    const Eigen::VectorXd z_active = m_aa.solve(Eigen::VectorXd(-p.q(active)));
-    fresh(active) = z_active;
-  }
-  for (const Eigen::VectorXd& candidate : {corrected, fresh, vertex}) {
-    LcpResult r = make_lcp_result(p, LcpStatus::solved, candidate, steps);
-    if (r.residuals.worst_relative() <= accuracy)
-      return r;
+    for (const Eigen::VectorXd& candidate : {corrected, fresh, vertex}) {
+      LcpResult r = make_lcp_result(p, LcpStatus::solved, candidate, steps);
+      if (r.residuals.worst_relative() <= accuracy)
+        return r;
+    }
+    const Relative now = relative(p, corrected);
+    bool moved = false;
+    for (Index i = 0; i < p.size(); ++i) {
+      char& a = in_a[static_cast<std::size_t>(i)];
+      if (a ? now.z(i) < -accuracy : now.w(i) < -accuracy) {
+        a = !a;
+        moved = true;
+      }
+    }
+    if (!moved)
+      break;
   }
   return std::nullopt;
 }

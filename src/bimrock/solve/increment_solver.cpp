@@ -4,6 +4,7 @@
 #include <optional>
 #include <utility>
 
+#include <bimrock/assembly/yield_modes.hpp>  // kOpeningMode
 #include <bimrock/solve/fischer_burmeister_newton.hpp>
 #include <bimrock/solve/symmetric_splitting.hpp>
 #include <bimrock/solve/unsymmetric_tangent.hpp>
@@ -112,6 +113,54 @@ class LcpOnZone final : public LcpColumns {
   SparseMatrix controlled_c_;  // C' (split(), under displacement control)
   mutable std::optional<bool> symmetric_;
 };
+
+// The LCP of another's columns at a right-hand side of its own: the splitting's inner LCPs on
+// the dense route, the rows along the flow at the right-hand side each iterate sets.
+class AtRightHandSide final : public LcpColumns {
+ public:
+  explicit AtRightHandSide(LcpColumns& m) : m_(m) {}
+  void set_q(const Eigen::VectorXd& q) { q_ = q; }
+  [[nodiscard]] Eigen::Index size() const override { return m_.size(); }
+  [[nodiscard]] const Eigen::VectorXd& q() const override { return q_; }
+  [[nodiscard]] Eigen::MatrixXd columns(const std::vector<Eigen::Index>& cols) override {
+    return m_.columns(cols);
+  }
+  [[nodiscard]] bool symmetric() const override { return m_.symmetric(); }
+  [[nodiscard]] Eigen::Index group(Eigen::Index row) const override { return m_.group(row); }
+  [[nodiscard]] int group_rank(Eigen::Index row) const override { return m_.group_rank(row); }
+
+ private:
+  LcpColumns& m_;
+  Eigen::VectorXd q_;
+};
+
+// The splitting's first iterate on the dense route: the LCP of the joints' opening rows alone
+// (the tension cut-off, whose flow is its gradient: a symmetric block of M), solved; else
+// `gap_old`. Each inner LCP freezes the friction term of the normal stresses of the last
+// iterate, and a joint point predicted in tension has no shear strength there at all
+// (|tau| <= -tan(phi) sigma < 0): the first inner LCP would have no solution. After the
+// openings its normal stress is at most zero. (An opening row's multiplier is its total gap,
+// as in the LCP itself.)
+Eigen::VectorXd after_openings(LcpOnZone& on_zone, const YieldSystem& rows,
+                               const std::vector<YieldPoint>& points,
+                               const Eigen::VectorXd& gap_old, ActiveSetLcp& solver) {
+  std::vector<Eigen::Index> opening;
+  for (Eigen::Index i = 0; i < on_zone.size(); ++i) {
+    const YieldRow& row = rows.rows[static_cast<std::size_t>(i)];
+    if (points[static_cast<std::size_t>(row.point)].is_interface() && row.mode == kOpeningMode)
+      opening.push_back(i);
+  }
+  if (opening.empty())
+    return gap_old;
+  const LcpProblem openings{on_zone.columns(opening)(opening, Eigen::indexing::all),
+                            on_zone.q()(opening)};
+  const LcpResult r = solver.solve(openings);
+  if (r.status != LcpStatus::solved)
+    return gap_old;
+  Eigen::VectorXd start = Eigen::VectorXd::Zero(on_zone.size());
+  start(opening) = r.z;
+  return start;
+}
 
 // The splitting (symmetric_splitting.hpp) of a non-associated LCP on the reduced tangent:
 // M = M~ + E, M~ the LCP of the rows along the flow (`symmetric_part`, with q = 0), solved by
@@ -308,6 +357,42 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
   if (active_set && !decided(r) && !dense_tried) {
     r = active_set_.solve(on_zone, warm);
     out.active_set_iterations += r.steps;
+  }
+  if (active_set && !decided(r) && !out.on_tangent && !on_zone.symmetric() && lcp.along_flow &&
+      tuning_.splitting) {
+    // A non-symmetric LCP that the block rule did not solve on the dense active block: split,
+    // as on the reduced tangent, its inner LCPs on the dense block of the rows along the flow
+    // (projected Newton behind them). Lemke and branch and bound, which come next, end on rays
+    // that prove nothing and search trees that outgrow their budget on the degenerate LCPs of
+    // cohesionless joints with dilation below friction.
+    const YieldSystem along_flow = stiffness.local(*lcp.along_flow);
+    LcpOnZone symmetric_part(along_flow, lcp.points, columns, Eigen::VectorXd::Zero(m),
+                             Eigen::VectorXd(), nullptr, Eigen::VectorXd());
+    if (symmetric_part.symmetric()) {
+      AtRightHandSide inner(symmetric_part);
+      const SplittingRemainder remainder = [&](const Eigen::VectorXd& z) {
+        return on_zone.minus_times(symmetric_part, z);
+      };
+      const SymmetricLcpSolve solve_inner = [&](const Eigen::VectorXd& q,
+                                                const Eigen::VectorXd* start, bool newton_step) {
+        inner.set_q(q);
+        LcpResult inner_r = (newton_step ? after_newton_ : active_set_).solve(inner, start);
+        out.active_set_iterations += inner_r.steps;
+        return inner_r;
+      };
+      const ActiveSetProposal propose = [&](const Eigen::VectorXd& active) {
+        LcpResult tried = proposal_check_.solve(on_zone, &active);
+        out.active_set_iterations += tried.steps;
+        if (tried.status != LcpStatus::solved)
+          return ProposalOutcome{.solved = false, .z = std::move(tried.z)};
+        r = std::move(tried);
+        return ProposalOutcome{.solved = true, .z = {}};
+      };
+      const Eigen::VectorXd start =
+          after_openings(on_zone, local, lcp.points, lcp.gap_old, active_set_);
+      if (solve_by_splitting(on_zone.q(), remainder, solve_inner, propose, start, warm).solved)
+        return finish(Outcome::solved, r);
+    }
   }
   if (!decided(r) && thoroughness != Thoroughness::thorough && m > tuning_.reduced_tangent_rows)
     return finish(Outcome::undecided, r);  // no pivoting on a large LCP

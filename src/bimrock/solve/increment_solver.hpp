@@ -9,6 +9,8 @@
 ///   ones, whose active sets are tried on it, symmetric_splitting.hpp, unless the dense active
 ///   block solves it first where few rows are active), else on the dense active block (only the
 ///   columns of active rows are formed);
+/// - a non-associated LCP that the dense active block leaves unsolved, split likewise, its
+///   inner LCPs on the dense block;
 /// - where it fails, Lemke on a working set of rows, then on the whole matrix;
 /// - last, branch and bound on the complementary pairs, which decides every LCP.
 #include <vector>
@@ -45,10 +47,12 @@ struct SolverTuning {
   /// the caller's interrupt (0: never).
   int interrupt_after = 3;
   /// A non-associated LCP on the reduced tangent is first split into associated ones, whose
-  /// active sets are tried on it (symmetric_splitting.hpp); false: the block rule alone.
+  /// active sets are tried on it, and one that the dense active block leaves unsolved is split
+  /// before the pivoting methods (symmetric_splitting.hpp); false: the block rule alone.
   bool splitting = true;
-  /// The splitting takes Newton steps from the active sets it tries and that fail
-  /// (symmetric_splitting.hpp); false: it drops them.
+  /// The splitting on the reduced tangent takes Newton steps from the active sets it tries and
+  /// that fail (symmetric_splitting.hpp); false: it drops them. (On the dense route it always
+  /// takes them.)
   bool splitting_newton = true;
   /// The non-symmetric tangent of a non-associated LCP is first solved by GMRES preconditioned
   /// by the associated form's factor (unsymmetric_tangent.hpp); false: LU always.
