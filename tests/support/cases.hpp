@@ -1,10 +1,13 @@
 #pragma once
 // Small case builders shared by tests: they write CaseSpecs the way a case file would.
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include <bimrock/geometry/brick_pattern.hpp>
 #include <bimrock/model/case_spec.hpp>
+
+#include "support/degrees.hpp"
 
 namespace bimrock::testing {
 
@@ -42,6 +45,18 @@ inline JointMaterial springs(const std::string& name, double kn, double ks,
   j.shear_stiffness = ks;
   j.integration = rule;
   j.source.item = name;
+  return j;
+}
+
+/// Springs with a dry joint's strength: Mohr-Coulomb friction and dilation (in degrees), no
+/// cohesion and no tension, as dry masonry and clean rock joints have.
+inline JointMaterial dry_joint(const std::string& name, double kn, double ks, double friction_deg,
+                               double dilation_deg) {
+  JointMaterial j = springs(name, kn, ks);
+  JointStrength s;
+  s.friction = Softening::constant(std::tan(friction_deg * kDeg));
+  s.dilation = std::tan(dilation_deg * kDeg);
+  j.strength = s;
   return j;
 }
 

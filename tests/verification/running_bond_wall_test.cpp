@@ -14,7 +14,8 @@
 // complete method's polish to take an open point's slip row active at a cohesionless apex, and
 // that of 3 x 4 bricks at 50 deg the splitting on the dense route, where branch and bound runs
 // out of budget.
-#include <cmath>
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -24,13 +25,10 @@
 #include <bimrock/geometry/brick_pattern.hpp>
 
 #include "support/cases.hpp"
-#include "support/degrees.hpp"
 #include "support/support_reaction.hpp"
 
 namespace bimrock {
 namespace {
-
-using testing::kDeg;
 
 constexpr double kMasonryUnitWeight = 20e3;  // [N/m^3]
 
@@ -45,12 +43,7 @@ CaseSpec running_bond_wall(const Wall& wall, double friction_deg, double dilatio
   CaseSpec c;
   c.file = "wall";
   c.block_materials = {testing::rock(20e9, 0.25, kMasonryUnitWeight)};
-  JointMaterial dry = testing::springs("dry", 1e11, 2.5e10);
-  JointStrength s;
-  s.friction = Softening::constant(std::tan(friction_deg * kDeg));
-  s.dilation = std::tan(dilation_deg * kDeg);
-  dry.strength = s;
-  c.joint_materials = {dry};
+  c.joint_materials = {testing::dry_joint("dry", 1e11, 2.5e10, friction_deg, dilation_deg)};
   c.default_joint = "dry";
   c.blocks = testing::blocks_of(
       brick_pattern(wall.bricks, wall.courses, wall.width, wall.height, Stagger::rows));

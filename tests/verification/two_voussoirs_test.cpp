@@ -52,12 +52,7 @@ CaseSpec voussoirs(double friction_deg, double dilation_deg) {
   c.file = "voussoirs";
   c.settings.plane = PlaneMode::stress;
   c.block_materials = {testing::rock(1e10, 0.2, 20e3)};
-  JointMaterial dry = testing::springs("dry", 1e11, 4e10);
-  JointStrength s;
-  s.friction = Softening::constant(std::tan(friction_deg * kDeg));
-  s.dilation = std::tan(dilation_deg * kDeg);
-  dry.strength = s;
-  c.joint_materials = {dry};
+  c.joint_materials = {testing::dry_joint("dry", 1e11, 4e10, friction_deg, dilation_deg)};
   c.blocks = testing::blocks_of({Polygon{{{7.5, 0}, {12.5, 0}, {0, 12.5}, {0, 7.5}}},
                                  Polygon{{{0, 7.5}, {0, 12.5}, {-12.5, 0}, {-7.5, 0}}}});
   c.default_joint = "dry";
