@@ -1,5 +1,6 @@
 // The LCP data object, its residuals and the reach of an infeasibility certificate. Expected
 // numbers are worked by hand (and the certificate's reach is checked with Lemke as well).
+#include <limits>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -49,6 +50,21 @@ TEST(LcpResiduals, ViolatedRowOfZeroMatrix) {
   const LcpResiduals r = measure({MatrixXd{{0.0}}, VectorXd{{-1.0}}}, VectorXd{{0.0}});
   EXPECT_EQ(r.min_w, -1.0);
   EXPECT_EQ(r.w_violation, 1.0);
+}
+
+TEST(LcpResiduals, ANonFiniteIterateFailsEveryCheck) {
+  // NaN compares false with everything: without care it would leave the maxima at 0 and pass.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const VectorXd& z : {VectorXd{{nan, 0.0}}, VectorXd{{0.5, nan}},
+                            VectorXd{{std::numeric_limits<double>::infinity(), 0.0}}}) {
+    const LcpResiduals r = measure(kProblem, z);
+    EXPECT_FALSE(r.worst_relative() <= 1.0);
+    EXPECT_FALSE(r.z_violation <= 1.0);
+    EXPECT_FALSE(r.w_violation <= 1.0);
+  }
+  // q itself not finite: w is not.
+  const LcpProblem broken{kProblem.m, VectorXd{{nan, 3.0}}};
+  EXPECT_FALSE(measure(broken, VectorXd{{0.0, 0.0}}).worst_relative() <= 1.0);
 }
 
 TEST(LcpProblem, RoundTripsThroughTextExactly) {

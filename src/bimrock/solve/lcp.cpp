@@ -93,6 +93,14 @@ LcpResiduals measure(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const E
     const double pair = std::min(ratio(std::abs(z(i)), z_scale), ratio(std::abs(w(i)), s(i)));
     r.complementarity = std::max(r.complementarity, pair);
   }
+  if (!z.allFinite() || !w.allFinite()) {
+    // NaN compares false, so it drops out of the maxima above: a non-finite z or w fails every
+    // check instead.
+    const double fails = std::numeric_limits<double>::infinity();
+    r.z_violation = fails;
+    r.w_violation = fails;
+    r.complementarity = fails;
+  }
   return r;
 }
 
