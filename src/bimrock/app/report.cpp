@@ -74,10 +74,14 @@ void print_increment(const Model& model, const IncrementRecord& r, double elapse
   }
   done += stage.control ? std::min<double>(r.increment, stage.increments)
                         : std::clamp(r.stage_factor, 0.0, 1.0) * stage.increments;
-  const double left = done > 0.0 ? elapsed * (total - done) / done : 0.0;
+  // Below a hundredth of an increment done, the rate says nothing of the time left (a part of
+  // round-off size carried would promise years).
+  const std::string left = done >= 0.01
+                               ? fmt::format("about {:.0f} s left", elapsed * (total - done) / done)
+                               : std::string("time left unknown");
   fmt::print(
       "stage {}/{} {:>12} step {:>3} of {}: factor {:.6f}, yielding points {:>5}, open {:>5}, "
-      "LCP {:>5} rows; {:.1f} s, about {:.0f} s left\n",
+      "LCP {:>5} rows; {:.1f} s, {}\n",
       r.stage + 1, model.stages.size(), stage.name, r.increment, stage.increments, r.stage_factor,
       r.yielding_points, r.open_points, r.lcp_size, elapsed, left);
 }
@@ -131,7 +135,13 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
   }
   if (result.factor_of_safety) {
     const FactorOfSafety& f = *result.factor_of_safety;
-    if (f.collapse && f.lower == 0.0)
+    // Below 1 the search lowers F until the stages carry; an undecided trial ends it early.
+    if (f.collapse && f.lower == 0.0 && f.undecided)
+      fmt::print(
+          "FACTOR OF SAFETY (strength reduction): F < {:.4f}: the stages fail there, and the "
+          "next trial, with stronger joints, could not be solved accurately, nor shown to fail\n",
+          f.collapse->failed);
+    else if (f.collapse && f.lower == 0.0)
       fmt::print(
           "FACTOR OF SAFETY (strength reduction): F < {:.4f}: the stages fail even with the "
           "strengths multiplied by factor_of_safety.largest\n",
@@ -139,8 +149,11 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
     else if (f.collapse)
       fmt::print(
           "FACTOR OF SAFETY (strength reduction): F between {:.4f} (carried) and {:.4f} (fails); "
-          "{} yield modes in its mechanism (summary.json, fos_mechanism.png)\n",
-          f.lower, f.collapse->failed, f.collapse->mechanism.size());
+          "{} yield modes in its mechanism (summary.json, fos_mechanism.png){}\n",
+          f.lower, f.collapse->failed, f.collapse->mechanism.size(),
+          f.undecided ? "; a trial inside could not be solved accurately, nor shown to fail, so "
+                        "the bracket is wider than its tolerance"
+                      : "");
     else if (f.undecided)
       fmt::print(
           "FACTOR OF SAFETY (strength reduction): F >= {:.4f}; the next step could not be "
