@@ -44,8 +44,10 @@ struct FactorOfSafety {
   /// The smallest F proven to fail (collapse->failed; collapse->carried is `lower`) and its
   /// mechanism; none where the structure carries F = `largest` (or a step was undecided).
   std::optional<Collapse> collapse;
-  /// A step was neither carried nor proven to fail (round-off near the limit): F is at least
-  /// `lower`, and no upper bound was proven.
+  /// A step was neither carried nor proven to fail (round-off near the limit), and the search
+  /// ended there. Above 1: F is at least `lower`, and no upper bound was proven. Below 1: F is
+  /// below collapse->failed, the smallest F proven to fail, and at least `lower`, the largest
+  /// carried (0: none).
   bool undecided = false;
   std::vector<FactorTrial> trials;  ///< F = 1 and every F carried, in order
 };

@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include <bimrock/analysis/memory_estimate.hpp>
+#include <bimrock/io/factor_of_safety_text.hpp>
 
 namespace bimrock {
 
@@ -133,38 +134,8 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
   } else {
     fmt::print("all {} stages carried\n", model.stages.size());
   }
-  if (result.factor_of_safety) {
-    const FactorOfSafety& f = *result.factor_of_safety;
-    // Below 1 the search lowers F until the stages carry; an undecided trial ends it early.
-    if (f.collapse && f.lower == 0.0 && f.undecided)
-      fmt::print(
-          "FACTOR OF SAFETY (strength reduction): F < {:.4f}: the stages fail there, and the "
-          "next trial, with stronger joints, could not be solved accurately, nor shown to fail\n",
-          f.collapse->failed);
-    else if (f.collapse && f.lower == 0.0)
-      fmt::print(
-          "FACTOR OF SAFETY (strength reduction): F < {:.4f}: the stages fail even with the "
-          "strengths multiplied by factor_of_safety.largest\n",
-          f.collapse->failed);
-    else if (f.collapse)
-      fmt::print(
-          "FACTOR OF SAFETY (strength reduction): F between {:.4f} (carried) and {:.4f} (fails); "
-          "{} yield modes in its mechanism (summary.json, fos_mechanism.png){}\n",
-          f.lower, f.collapse->failed, f.collapse->mechanism.size(),
-          f.undecided ? "; a trial inside could not be solved accurately, nor shown to fail, so "
-                        "the bracket is wider than its tolerance"
-                      : "");
-    else if (f.undecided)
-      fmt::print(
-          "FACTOR OF SAFETY (strength reduction): F >= {:.4f}; the next step could not be "
-          "solved accurately, nor shown to fail\n",
-          f.lower);
-    else
-      fmt::print(
-          "FACTOR OF SAFETY (strength reduction): F >= {:.4f}, the largest tried "
-          "(factor_of_safety.largest)\n",
-          f.lower);
-  }
+  if (result.factor_of_safety)
+    fmt::print("{}\n", factor_of_safety_text(*result.factor_of_safety));
   print_timings(result.timings);
   fmt::print("results written to {}/\n", out.string());
 }
