@@ -221,21 +221,6 @@ TEST(LoadStepping, FailuresWithoutProofNearTheCollapseLeaveItUndecided) {
   EXPECT_GT(out.carried, kCollapse * (1.0 - 1e-3));  // carried what could be
 }
 
-TEST(LoadStepping, AStepUndecidedAtTheStagesStartIsCutToTheToleranceOfTheStepNotToRoundOff) {
-  // Nothing carries and nothing is proven (an LCP the solver cannot decide at any step, as at a
-  // cohesionless apex, where the first step's LCP is the same whatever its length). From the
-  // stage's start the relative bracket of the factor would never close: the cuts stop once the
-  // step is within the tolerance of the first one, about log2(1 / 1e-4) = 14 of them.
-  Structure s{.answer = [](double, double) { return failed(); }};
-  const SteppedIncrement out = s.step(0.5);
-  EXPECT_EQ(out.outcome, SteppedIncrement::Outcome::undecided);
-  EXPECT_EQ(out.carried, 0.0);
-  EXPECT_TRUE(s.carried.empty());
-  const double tolerance = SteppingOptions{}.bracket_tolerance;
-  EXPECT_LE(s.tried.size(), 1u + static_cast<std::size_t>(std::ceil(std::log2(1.0 / tolerance))));
-  EXPECT_GE(s.tried.back(), 0.5 * tolerance * 0.5);  // the last cut is not below the tolerance
-}
-
 TEST(LoadStepping, AKinkSplitsTheStepAtTheKink) {
   // The first trial of the step reaches a softening law's kink at a quarter of it.
   Structure s{.answer = [](double from, double step) {

@@ -1,6 +1,5 @@
 #include <bimrock/analysis/load_stepping.hpp>
 
-#include <algorithm>
 #include <cmath>
 
 namespace bimrock {
@@ -83,13 +82,8 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
            remaining > 0.0 && !unstable_at_start();
   };
   for (; go_on(); ++trials) {
-    // The bracket is relative to the load factor, but never finer than the tolerance of the
-    // increment's own step: at a stage's start the factor tends to zero, and the cuts would go
-    // on to round-off (an increment left undecided there would end after all forty bisections,
-    // a part of some 1e-12 of the stage carried, each bisection a whole search).
     const double upper = proven ? *proven : out.carried + failing_step;
-    if (std::abs(upper - out.carried) <=
-        options.bracket_tolerance * std::max(std::abs(upper), step))
+    if (std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper))
       break;
     // After a numerical failure and a part carried, the rest is tried again whole; where that
     // fails too, the next parts grow from the last one instead (near a limit load the steps
