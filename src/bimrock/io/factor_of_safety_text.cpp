@@ -10,8 +10,8 @@ std::string factor_of_safety_text(const FactorOfSafety& f) {
   // Below 1 the search lowers F until the stages carry; an undecided trial ends it early.
   if (f.collapse && f.lower == 0.0 && f.undecided)
     return head + fmt::format(
-                      "F < {:.4f}: the stages fail there, and the next trial, with stronger "
-                      "joints, {}",
+                      "F < {:.4f}: the stages fail there, and the next trial, with the "
+                      "strengths raised further, {}",
                       f.collapse->failed, undecided);
   if (f.collapse && f.lower == 0.0)
     return head + fmt::format(
