@@ -33,7 +33,8 @@ enum class LcpStatus {
 
 [[nodiscard]] const char* to_string(LcpStatus status);
 
-/// How well a candidate z satisfies the LCP, measured on the unscaled problem.
+/// How well a candidate z satisfies the LCP, measured on the unscaled problem. A z or w with a
+/// non-finite entry has infinite relative measures: it fails every check.
 /// The relative measures are invariant under positive scaling of the rows and columns of M:
 /// row i is compared with the size of the terms that sum to w_i, s_i = |q_i| + sum_j |M_ij z_j|,
 /// and z with its largest entry |z|_inf.
