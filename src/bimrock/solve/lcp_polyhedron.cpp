@@ -41,7 +41,7 @@ class QuietGlpk {
 
 /// The largest LP solved in exact rational arithmetic. The rationals of a dense LP's basis grow
 /// with its size: on 18 rows glp_exact takes milliseconds, on 144 rows (a 14-block structure)
-/// one call ran for minutes.
+/// one call runs for minutes.
 constexpr Index kExactRows = 40;
 
 /// Solves p from its current basis by the primal simplex; where that fails (a degenerate LP
