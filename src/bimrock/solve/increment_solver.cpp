@@ -189,6 +189,42 @@ SplittingResult splitting_on_tangent(LcpOnZone& on_zone, LcpOnZone& symmetric_pa
                             {.newton = newton});
 }
 
+// The same splitting on the dense route: the inner LCPs on the dense block of the rows along
+// the flow (`symmetric_part`), each at the right-hand side its iterate sets.
+SplittingResult splitting_on_dense(LcpOnZone& on_zone, LcpOnZone& symmetric_part,
+                                   ActiveSetLcp& active_set, ActiveSetLcp& after_newton,
+                                   const ActiveSetProposal& propose, const Eigen::VectorXd& start,
+                                   const Eigen::VectorXd* warm, IncrementSolution& out) {
+  AtRightHandSide inner(symmetric_part);
+  const SplittingRemainder remainder = [&](const Eigen::VectorXd& z) {
+    return on_zone.minus_times(symmetric_part, z);
+  };
+  const SymmetricLcpSolve solve = [&](const Eigen::VectorXd& q, const Eigen::VectorXd* active,
+                                      bool newton_step) {
+    inner.set_q(q);
+    LcpResult r = (newton_step ? after_newton : active_set).solve(inner, active);
+    out.active_set_iterations += r.steps;
+    return r;
+  };
+  return solve_by_splitting(on_zone.q(), remainder, solve, propose, start, warm);
+}
+
+// The splitting's proposals, each tried by a step or two of the active-set method (`check`) on
+// the LCP itself, given by `equations`; the first that solves it is kept in `solved`. Where
+// one does not, its multipliers are the splitting's Newton step.
+template <class Equations>
+ActiveSetProposal proposals_on(Equations& equations, ActiveSetLcp& check, LcpResult& solved,
+                               IncrementSolution& out) {
+  return [&equations, &check, &solved, &out](const Eigen::VectorXd& active) {
+    LcpResult tried = check.solve(equations, &active);
+    out.active_set_iterations += tried.steps;
+    if (tried.status != LcpStatus::solved)
+      return ProposalOutcome{.solved = false, .z = std::move(tried.z)};
+    solved = std::move(tried);
+    return ProposalOutcome{.solved = true, .z = {}};
+  };
+}
+
 /// Steps of the active-set method that try an active set the splitting proposes: one solves the
 /// proposal's equations, one more lets a row or two that it missed settle.
 constexpr int kProposalSteps = 2;
@@ -314,20 +350,11 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
       equations = std::make_unique<UnsymmetricTangentEquations>(split, stiffness.factor(),
                                                                 std::move(preconditioner));
       if (symmetric_tangent && tuning_.splitting) {
-        // The splitting proposes active sets, each tried by a step or two of the active-set
-        // method on the LCP itself; where that does not solve it, its multipliers are the
-        // splitting's Newton step.
-        const ActiveSetProposal propose = [&](const Eigen::VectorXd& active) {
-          LcpResult tried = proposal_check_.solve(*equations, &active, nullptr);
-          out.active_set_iterations += tried.steps;
-          if (tried.status != LcpStatus::solved)
-            return ProposalOutcome{.solved = false, .z = std::move(tried.z)};
-          r = std::move(tried);
-          return ProposalOutcome{.solved = true, .z = {}};
-        };
+        // The splitting proposes active sets, each tried on the LCP itself.
         const SplittingResult splitting = splitting_on_tangent(
             on_zone, *symmetric_part, *symmetric_split, *symmetric_tangent, active_set_,
-            after_newton_, propose, lcp.gap_old, warm, tuning_.splitting_newton, out);
+            after_newton_, proposals_on(*equations, proposal_check_, r, out), lcp.gap_old, warm,
+            tuning_.splitting_newton, out);
         out.tangent_factorizations += factorizations();
         if (splitting.solved)
           return finish(Outcome::solved, r);
@@ -368,31 +395,13 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     const YieldSystem along_flow = stiffness.local(*lcp.along_flow);
     LcpOnZone symmetric_part(along_flow, lcp.points, columns, Eigen::VectorXd::Zero(m),
                              Eigen::VectorXd(), nullptr, Eigen::VectorXd());
-    if (symmetric_part.symmetric()) {
-      AtRightHandSide inner(symmetric_part);
-      const SplittingRemainder remainder = [&](const Eigen::VectorXd& z) {
-        return on_zone.minus_times(symmetric_part, z);
-      };
-      const SymmetricLcpSolve solve_inner = [&](const Eigen::VectorXd& q,
-                                                const Eigen::VectorXd* start, bool newton_step) {
-        inner.set_q(q);
-        LcpResult inner_r = (newton_step ? after_newton_ : active_set_).solve(inner, start);
-        out.active_set_iterations += inner_r.steps;
-        return inner_r;
-      };
-      const ActiveSetProposal propose = [&](const Eigen::VectorXd& active) {
-        LcpResult tried = proposal_check_.solve(on_zone, &active);
-        out.active_set_iterations += tried.steps;
-        if (tried.status != LcpStatus::solved)
-          return ProposalOutcome{.solved = false, .z = std::move(tried.z)};
-        r = std::move(tried);
-        return ProposalOutcome{.solved = true, .z = {}};
-      };
-      const Eigen::VectorXd start =
-          after_openings(on_zone, local, lcp.points, lcp.gap_old, active_set_);
-      if (solve_by_splitting(on_zone.q(), remainder, solve_inner, propose, start, warm).solved)
-        return finish(Outcome::solved, r);
-    }
+    if (symmetric_part.symmetric() &&
+        splitting_on_dense(on_zone, symmetric_part, active_set_, after_newton_,
+                           proposals_on(on_zone, proposal_check_, r, out),
+                           after_openings(on_zone, local, lcp.points, lcp.gap_old, active_set_),
+                           warm, out)
+            .solved)
+      return finish(Outcome::solved, r);
   }
   if (!decided(r) && thoroughness != Thoroughness::thorough && m > tuning_.reduced_tangent_rows)
     return finish(Outcome::undecided, r);  // no pivoting on a large LCP
