@@ -14,7 +14,7 @@ AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s
   const YieldSystem associated =
       assemble_yield_system(ctx.model, ctx.points, s.points, s.u, candidates, FlowRule::associated);
   const IncrementLcp alcp{associated, lcp.points, lcp.q,    lcp.load_part, lcp.gap_old,
-                          nullptr,    {},         lcp.warm, nullptr};
+                          nullptr,    {},         lcp.warm, nullptr,       {}};
   bound.associated = solver.solve(alcp, nullptr, false);
   const IncrementSolution& a = bound.associated;
   // The candidate: associated flow's certificate, or its solution's flow where round-off

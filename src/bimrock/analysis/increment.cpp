@@ -110,7 +110,7 @@ IncrementLcp round_lcp(const StageContext& ctx, const YieldSystem& sys, const An
   const bool control = ctx.stage.control.has_value();
   const Eigen::VectorXd cx = sys.c * ctx.x_ref;
   const double load = control ? step / ctx.control_rate : step;
-  IncrementLcp lcp{sys, ctx.points, -sys.f0 - cx * load, {}, {}, nullptr, {}, {}, nullptr};
+  IncrementLcp lcp{sys, ctx.points, -sys.f0 - cx * load, {}, {}, nullptr, {}, {}, nullptr, {}};
   if (control) {
     lcp.control = &ctx.control;
     lcp.control_term = cx / ctx.control_rate;
@@ -258,6 +258,12 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       along_flow = assemble_yield_system(ctx.model, ctx.points, s.points, s.u,
                                          candidates.in_lcp(solver), FlowRule::gradient_along_flow);
       lcp.along_flow = &*along_flow;
+      lcp.perturbed = [&ctx, &s, in_lcp = candidates.in_lcp(solver)](double fraction) {
+        return PerturbedRows{assemble_yield_system(ctx.model, ctx.points, s.points, s.u, in_lcp,
+                                                   FlowRule::as_modelled, fraction),
+                             assemble_yield_system(ctx.model, ctx.points, s.points, s.u, in_lcp,
+                                                   FlowRule::gradient_along_flow, fraction)};
+      };
     }
     Eigen::VectorXd z = lcp.gap_old;
     if (sys.size() > 0) {

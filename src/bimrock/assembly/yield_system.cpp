@@ -4,7 +4,8 @@ namespace bimrock {
 
 YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
                                   const std::vector<PlasticState>& states, const Eigen::VectorXd& u,
-                                  const std::vector<int>& candidates, FlowRule flow) {
+                                  const std::vector<int>& candidates, FlowRule flow,
+                                  double toward_gradient) {
   YieldSystem sys;
   std::vector<Eigen::Triplet<double, std::int64_t>> phi;
   std::vector<Eigen::Triplet<double, std::int64_t>> c;
@@ -16,6 +17,8 @@ YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoi
     const Eigen::MatrixXd d = local_stiffness(model, point);
     const Eigen::VectorXd stress = local_stress(model, point, states[p], u);
     LocalYield y = linearize(model, point, states[p], stress);
+    if (toward_gradient != 0.0)
+      y.g += toward_gradient * (y.a - y.g);
     if (flow == FlowRule::associated)
       y.g = y.a;
     else if (flow == FlowRule::gradient_along_flow)

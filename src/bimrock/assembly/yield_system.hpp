@@ -38,10 +38,15 @@ enum class FlowRule { as_modelled, associated, gradient_along_flow };
 
 /// Builds the yield rows of every mode of the given yield points at their current state.
 /// @param candidates indices into `points`
+/// @param toward_gradient turns each flow direction g by this fraction t toward its yield
+///        function's gradient a, g + t (a - g), before `flow` applies: 0 keeps the model's, and
+///        a small t gives an LCP near the model's whose flows are never exactly opposite
+///        (solve/increment_lcp.hpp, IncrementLcp::perturbed)
 YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
                                   const std::vector<PlasticState>& states, const Eigen::VectorXd& u,
                                   const std::vector<int>& candidates,
-                                  FlowRule flow = FlowRule::as_modelled);
+                                  FlowRule flow = FlowRule::as_modelled,
+                                  double toward_gradient = 0.0);
 
 /// Whether the rows follow associated flow, C = Phi^T and N symmetric (to round-off): the LCP
 /// matrix N - C K^-1 Phi is then symmetric.

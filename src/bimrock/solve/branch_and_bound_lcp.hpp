@@ -5,8 +5,8 @@
 /// programs at its nodes.
 ///
 /// A node holds some z_i = 0 and some w_i = 0. Its LP is either empty (no solution below it) or
-/// gives a vertex; a vertex with z_i w_i = 0 on every row is a solution (polished, and checked
-/// on the whole problem); otherwise the pair with the largest min(z_i, w_i) (each relative to
+/// gives a vertex; a vertex with z_i w_i = 0 on every row is a solution (made exact by
+/// least_norm_pivoting(), and checked on the whole problem); otherwise the pair with the largest min(z_i, w_i) (each relative to
 /// its own scale) is branched: w_i = 0 (the row active) first where z_i is the larger, else
 /// z_i = 0 first. Every solution lies below one leaf, so a search in which every node ends
 /// empty proves that the LCP has no solution; an empty root gives, by Farkas' lemma, a

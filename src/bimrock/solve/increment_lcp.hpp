@@ -8,6 +8,7 @@
 /// over the candidate yield rows. The unknown of an opening row is the total gap, so z = gap_old
 /// + lambda and q is shifted by M gap_old. Everything is in the model's unknowns; the solver
 /// condenses it onto the zone it solves on.
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -16,6 +17,14 @@
 #include <bimrock/assembly/yield_system.hpp>
 
 namespace bimrock {
+
+/// The rows of an LCP with each flow direction turned by a fraction t toward its yield
+/// function's gradient (assemble_yield_system()'s toward_gradient), and their form along that
+/// flow (the symmetric part of its splitting).
+struct PerturbedRows {
+  YieldSystem rows;
+  YieldSystem along_flow;
+};
 
 struct IncrementLcp {
   const YieldSystem& rows;                ///< f0, C, Phi, N of the candidate rows
@@ -36,6 +45,11 @@ struct IncrementLcp {
   /// along its flow (FlowRule::gradient_along_flow), the symmetric part of the splitting that
   /// finds the solve's active set (symmetric_splitting.hpp). Null: none.
   const YieldSystem* along_flow = nullptr;
+  /// Non-associated flow under load control: the rows perturbed by a fraction t, assembled on
+  /// demand. For small t their LCP is near this one, without its exactly opposite slip flows of
+  /// dilation 0; where nothing else has solved this LCP, IncrementSolver follows the solutions
+  /// of decreasing t to one of it. Empty: none.
+  std::function<PerturbedRows(double t)> perturbed;
 };
 
 }  // namespace bimrock

@@ -1,11 +1,13 @@
 #include <bimrock/solve/increment_solver.hpp>
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <utility>
 
 #include <bimrock/assembly/yield_modes.hpp>  // kOpeningMode
 #include <bimrock/solve/fischer_burmeister_newton.hpp>
+#include <bimrock/solve/least_norm_pivoting.hpp>
 #include <bimrock/solve/symmetric_splitting.hpp>
 #include <bimrock/solve/unsymmetric_tangent.hpp>
 #include <bimrock/solve/working_set_lcp.hpp>
@@ -238,6 +240,28 @@ constexpr int kAfterNewtonSteps = 15;
 /// SolverTuning::dense_first_period-th LCP.
 constexpr int kDenseFirstFailures = 3;
 
+/// Rounds of least-norm pivoting that make the solution of the perturbed LCP one of the LCP
+/// itself, and the accuracy it must reach (that of the active-set method's solutions).
+constexpr int kLeastNormRounds = 10;
+constexpr double kLeastNormAccuracy = 1e-9;
+
+/// The perturbations of the flows (IncrementLcp::perturbed) whose solutions
+/// IncrementSolver::from_perturbed() follows, largest first: the LCP of the largest is the
+/// easiest to solve, that of the smallest the nearest to the LCP itself. (At dilation 0 and
+/// friction phi, t is a dilation of about t tan(phi).)
+constexpr std::array<double, 3> kFlowPerturbations{1e-2, 1e-3, 1e-4};
+
+/// Whether two rows of one yield point flow in exactly opposite directions (the slip rows of a
+/// joint point at dilation 0): their columns of M cancel.
+bool has_opposite_flows(const YieldSystem& rows) {
+  for (std::size_t i = 0; i + 1 < rows.rows.size(); ++i)
+    for (std::size_t j = i + 1; j < rows.rows.size() && rows.rows[j].point == rows.rows[i].point;
+         ++j)
+      if ((rows.flow[i] + rows.flow[j]).squaredNorm() <= 1e-24 * rows.flow[i].squaredNorm())
+        return true;
+  return false;
+}
+
 bool decided(const LcpResult& r) {
   return r.status == LcpStatus::solved || r.status == LcpStatus::no_solution;
 }
@@ -432,6 +456,10 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     const LcpProblem dense = on_zone.dense();
     r = lemke_.solve(dense);
     out.pivots += r.steps;
+    if (!decided(r) && tuning_.active_set && lcp.perturbed && has_opposite_flows(local)) {
+      if (std::optional<LcpResult> near = from_perturbed(lcp, dense, thoroughness, out))
+        r = std::move(*near);
+    }
     if (!decided(r))
       r = complete_.solve(dense);
   }
@@ -453,6 +481,34 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
   if (r.status == LcpStatus::solved)
     return finish(Outcome::solved, r);
   return finish(r.status == LcpStatus::no_solution ? Outcome::no_solution : Outcome::undecided, r);
+}
+
+std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp,
+                                                         const LcpProblem& dense,
+                                                         Thoroughness thoroughness,
+                                                         IncrementSolution& out) {
+  Eigen::VectorXd warm = lcp.warm;
+  bool any_solved = false;
+  for (const double t : kFlowPerturbations) {
+    const PerturbedRows rows = lcp.perturbed(t);
+    const IncrementLcp near{rows.rows,   lcp.points,       lcp.q, lcp.load_part,    lcp.gap_old,
+                            lcp.control, lcp.control_term, warm,  &rows.along_flow, {}};
+    const IncrementSolution solved =
+        solve(near, nullptr, false, thoroughness, Routes::up_to_pivoting);
+    out.active_set_iterations += solved.active_set_iterations;
+    out.tangent_factorizations += solved.tangent_factorizations;
+    if (solved.outcome != IncrementSolution::Outcome::solved) {
+      if (!any_solved)
+        break;  // the easiest one unsolved: past a limit load, none is solved
+      continue;
+    }
+    any_solved = true;
+    warm = (solved.z.array() > 0.0).cast<double>();
+    if (std::optional<LcpResult> exact = least_norm_pivoting(
+            dense, solved.z, kLeastNormAccuracy, kLeastNormRounds, solved.active_set_iterations))
+      return exact;
+  }
+  return std::nullopt;
 }
 
 }  // namespace bimrock

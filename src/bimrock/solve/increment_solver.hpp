@@ -12,7 +12,10 @@
 /// - a non-associated LCP that the dense active block leaves unsolved, split likewise, its
 ///   inner LCPs on the dense block;
 /// - where it fails, Lemke on a working set of rows, then on the whole matrix;
+/// - a non-associated LCP with exactly opposite flows (dilation 0): the solutions of the same
+///   LCP with perturbed flows (IncrementLcp::perturbed), made exact on it;
 /// - last, branch and bound on the complementary pairs, which decides every LCP.
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -138,6 +141,19 @@ class IncrementSolver {
   [[nodiscard]] ZoneStatistics zone_statistics() const { return zones_.statistics(); }
 
  private:
+  /// A non-associated LCP with exactly opposite flows that no route before branch and bound has
+  /// solved: the LCPs of its rows perturbed by decreasing fractions (IncrementLcp::perturbed),
+  /// each solved by the routes before the pivoting methods from the last one's solution, and
+  /// each solution made exact on this LCP (`dense`) by least-norm pivoting. At dilation 0 the
+  /// opposite slip columns of a joint point cancel: the block rule's active sets there are
+  /// singular, and branch and bound's tree outgrows its budget, where the perturbed LCPs are
+  /// solved as any other. Empty where none gives a solution; where the largest perturbation is
+  /// not solved, the smaller ones are not tried (past a limit load none is).
+  [[nodiscard]] std::optional<LcpResult> from_perturbed(const IncrementLcp& lcp,
+                                                        const LcpProblem& dense,
+                                                        Thoroughness thoroughness,
+                                                        IncrementSolution& out);
+
   SolverTuning tuning_;
   StiffnessZones zones_;
   ActiveSetLcp active_set_;

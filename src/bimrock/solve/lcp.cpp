@@ -104,6 +104,18 @@ LcpResiduals measure(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const E
   return r;
 }
 
+RelativePairs relative_pairs(const LcpProblem& problem, const Eigen::VectorXd& z) {
+  const Eigen::VectorXd w = problem.m * z + problem.q;
+  const Eigen::VectorXd s = problem.m.cwiseAbs() * z.cwiseAbs() + problem.q.cwiseAbs();
+  const double z_max = z.cwiseAbs().maxCoeff();
+  RelativePairs r{Eigen::VectorXd::Zero(problem.size()), Eigen::VectorXd::Zero(problem.size())};
+  for (Eigen::Index i = 0; i < problem.size(); ++i) {
+    r.z(i) = z_max > 0.0 ? z(i) / z_max : 0.0;
+    r.w(i) = s(i) > 0.0 ? w(i) / s(i) : 0.0;
+  }
+  return r;
+}
+
 LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z) {
   return measure(z, problem.m * z + problem.q,
                  problem.m.cwiseAbs() * z.cwiseAbs() + problem.q.cwiseAbs());

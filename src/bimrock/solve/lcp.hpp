@@ -50,6 +50,15 @@ struct LcpResiduals {
   [[nodiscard]] double worst_relative() const;
 };
 
+/// Each pair (z_i, w_i) of a point z relative to its scale: z_i / |z|_inf and w_i / s_i, s_i the
+/// size of the terms that sum to w_i (as in LcpResiduals): how far a row is from active (w) and
+/// from free (z), comparable across rows.
+struct RelativePairs {
+  Eigen::VectorXd z;
+  Eigen::VectorXd w;
+};
+[[nodiscard]] RelativePairs relative_pairs(const LcpProblem& problem, const Eigen::VectorXd& z);
+
 /// Residuals of z for the problem (w = M z + q computed here).
 [[nodiscard]] LcpResiduals measure(const LcpProblem& problem, const Eigen::VectorXd& z);
 /// Residuals of z given w = M z + q and the size of the terms that sum to each w_i
