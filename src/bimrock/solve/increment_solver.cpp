@@ -246,10 +246,10 @@ constexpr int kLeastNormRounds = 10;
 constexpr double kLeastNormAccuracy = 1e-9;
 
 /// The perturbations of the flows (IncrementLcp::perturbed) whose solutions
-/// IncrementSolver::from_perturbed() follows, largest first: the LCP of the largest is the
-/// easiest to solve, that of the smallest the nearest to the LCP itself. (At dilation 0 and
-/// friction phi, t is a dilation of about t tan(phi).)
-constexpr std::array<double, 3> kFlowPerturbations{1e-2, 1e-3, 1e-4};
+/// IncrementSolver::from_perturbed() follows, largest first: from associated flow (t = 1, a
+/// symmetric LCP, the easiest to solve) to the nearest to the LCP itself. (At dilation 0 and
+/// friction phi, a small t is a dilation of about t tan(phi).)
+constexpr std::array<double, 5> kFlowPerturbations{1.0, 1e-1, 1e-2, 1e-3, 1e-4};
 
 /// Whether two rows of one yield point flow in exactly opposite directions (the slip rows of a
 /// joint point at dilation 0): their columns of M cancel.
@@ -457,7 +457,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     r = lemke_.solve(dense);
     out.pivots += r.steps;
     if (!decided(r) && tuning_.active_set && lcp.perturbed && has_opposite_flows(local)) {
-      if (std::optional<LcpResult> near = from_perturbed(lcp, dense, thoroughness, out))
+      if (std::optional<LcpResult> near = from_perturbed(lcp, dense, out))
         r = std::move(*near);
     }
     if (!decided(r))
@@ -485,7 +485,6 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
 
 std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp,
                                                          const LcpProblem& dense,
-                                                         Thoroughness thoroughness,
                                                          IncrementSolution& out) {
   Eigen::VectorXd warm = lcp.warm;
   bool any_solved = false;
@@ -494,12 +493,12 @@ std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp
     const IncrementLcp near{rows.rows,   lcp.points,       lcp.q, lcp.load_part,    lcp.gap_old,
                             lcp.control, lcp.control_term, warm,  &rows.along_flow, {}};
     const IncrementSolution solved =
-        solve(near, nullptr, false, thoroughness, Routes::up_to_pivoting);
+        solve(near, nullptr, false, Thoroughness::quick, Routes::up_to_pivoting);
     out.active_set_iterations += solved.active_set_iterations;
     out.tangent_factorizations += solved.tangent_factorizations;
     if (solved.outcome != IncrementSolution::Outcome::solved) {
       if (!any_solved)
-        break;  // the easiest one unsolved: past a limit load, none is solved
+        break;  // associated flow unsolved: past its limit load, none is solved
       continue;
     }
     any_solved = true;

@@ -142,16 +142,15 @@ class IncrementSolver {
 
  private:
   /// A non-associated LCP with exactly opposite flows that no route before branch and bound has
-  /// solved: the LCPs of its rows perturbed by decreasing fractions (IncrementLcp::perturbed),
-  /// each solved by the routes before the pivoting methods from the last one's solution, and
-  /// each solution made exact on this LCP (`dense`) by least-norm pivoting. At dilation 0 the
-  /// opposite slip columns of a joint point cancel: the block rule's active sets there are
-  /// singular, and branch and bound's tree outgrows its budget, where the perturbed LCPs are
-  /// solved as any other. Empty where none gives a solution; where the largest perturbation is
-  /// not solved, the smaller ones are not tried (past a limit load none is).
+  /// solved: the LCPs of its rows perturbed by fractions from 1 (associated flow) down to 1e-4
+  /// (IncrementLcp::perturbed), each solved quick by the routes before the pivoting methods from
+  /// the last one's solution, and each solution made exact on this LCP (`dense`) by least-norm
+  /// pivoting. At dilation 0 the opposite slip columns of a joint point cancel: the block rule's
+  /// active sets there are singular, and branch and bound's tree outgrows its budget, where the
+  /// perturbed LCPs are solved as any other. Empty where none gives a solution; where associated
+  /// flow is not solved, the rest are not tried (past its limit load none is).
   [[nodiscard]] std::optional<LcpResult> from_perturbed(const IncrementLcp& lcp,
                                                         const LcpProblem& dense,
-                                                        Thoroughness thoroughness,
                                                         IncrementSolution& out);
 
   SolverTuning tuning_;
