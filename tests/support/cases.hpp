@@ -87,6 +87,20 @@ inline SupportSpec fixed(Vec2 a, Vec2 b) {
   return {on_line(a, b), SupportKind::fixed, std::nullopt, {0, "supports"}};
 }
 
+/// A fixed support along a line whose springs are the joint material `joint` (a dry base).
+inline SupportSpec base_of(Vec2 a, Vec2 b, const std::string& joint) {
+  SupportSpec base = fixed(a, b);
+  base.joint_material = joint;
+  return base;
+}
+
+/// A stage of the structure's own weight (gravity downwards) in `increments` steps.
+inline StageSpec gravity_stage(int increments) {
+  StageSpec gravity{"gravity", {}, increments, std::nullopt, {0, "stages[0]"}};
+  gravity.loads.gravity = Vec2(0, -1);
+  return gravity;
+}
+
 /// Uniform normal traction (tension positive) on the edges along a line.
 inline TractionSpec pressure_on(Vec2 a, Vec2 b, double normal) {
   return {on_line(a, b), normal, 0.0, {0, "tractions"}};

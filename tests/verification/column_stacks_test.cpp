@@ -15,18 +15,14 @@
 // are exactly opposite, and the first increment of these 19 blocks needs the
 // perturbed LCP (IncrementLcp::perturbed) at 40 deg: the block rule's active sets are singular,
 // the splitting's inner LCPs have no solution, and branch and bound runs out of budget.
-#include <algorithm>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include <bimrock/analysis/field_results.hpp>
-#include <bimrock/analysis/plastic_analysis.hpp>
-
 #include "support/cases.hpp"
 #include "support/rectangle.hpp"
-#include "support/support_reaction.hpp"
+#include "support/stands_under_weight.hpp"
 
 namespace bimrock {
 namespace {
@@ -70,13 +66,9 @@ CaseSpec column_stacks(double friction_deg, double dilation_deg) {
     }
   }
   c.blocks = testing::blocks_of(blocks);
-  SupportSpec base =
-      testing::fixed({0, 0}, {kStackWidth * static_cast<double>(columns().size()), 0});
-  base.joint_material = "dry";
-  c.supports.push_back(base);
-  StageSpec gravity{"gravity", {}, 2, std::nullopt, {0, "stages[0]"}};
-  gravity.loads.gravity = Vec2(0, -1);
-  c.stages.push_back(gravity);
+  const double width = kStackWidth * static_cast<double>(columns().size());
+  c.supports.push_back(testing::base_of({0, 0}, {width, 0}, "dry"));
+  c.stages.push_back(testing::gravity_stage(2));
   return c;
 }
 
@@ -84,21 +76,7 @@ TEST(ColumnStacks, StandUnderTheirWeightForEveryFrictionAndDilation) {
   for (const double phi : {20.0, 30.0, 38.7, 40.0, 50.0, 60.0, 70.0, 80.0}) {
     for (const double psi : {0.0, phi / 2.0, phi}) {
       const std::string what = "phi " + std::to_string(phi) + ", psi " + std::to_string(psi);
-      const Model model = build_model(column_stacks(phi, psi));
-      YieldPointIndex index;
-      const std::vector<YieldPoint> points = make_yield_points(model, &index);
-      double worst_balance = 0.0;
-      const PlasticResult r = run_plastic_analysis(
-          model, PlasticOptions{}, [&](const IncrementRecord& rec, const AnalysisState& state) {
-            const PlasticParts plastic{&index, &state.points};
-            const Vec2 load(0.0, -rec.stage_factor * weight());
-            const Vec2 reaction = testing::support_reaction(model, state.u, plastic);
-            worst_balance = std::max(worst_balance, (load + reaction).norm() / weight());
-          });
-      EXPECT_FALSE(r.stopped.has_value()) << what << ": " << r.stopped->reason;
-      EXPECT_FALSE(r.collapse.has_value()) << what;
-      EXPECT_NEAR(r.state.stage_factor, 1.0, 1e-12) << what;
-      EXPECT_LE(worst_balance, 1e-8) << what;
+      testing::expect_stands_under_weight(build_model(column_stacks(phi, psi)), weight(), what);
     }
   }
 }

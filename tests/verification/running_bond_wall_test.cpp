@@ -14,18 +14,15 @@
 // complete method's polish to take an open point's slip row active at a cohesionless apex, and
 // that of 3 x 4 bricks at 50 deg the splitting on the dense route, where branch and bound runs
 // out of budget.
-#include <algorithm>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include <bimrock/analysis/field_results.hpp>
-#include <bimrock/analysis/plastic_analysis.hpp>
 #include <bimrock/geometry/brick_pattern.hpp>
 
 #include "support/cases.hpp"
-#include "support/support_reaction.hpp"
+#include "support/stands_under_weight.hpp"
 
 namespace bimrock {
 namespace {
@@ -47,12 +44,8 @@ CaseSpec running_bond_wall(const Wall& wall, double friction_deg, double dilatio
   c.default_joint = "dry";
   c.blocks = testing::blocks_of(
       brick_pattern(wall.bricks, wall.courses, wall.width, wall.height, Stagger::rows));
-  SupportSpec base = testing::fixed({0, 0}, {wall.bricks * wall.width, 0});
-  base.joint_material = "dry";
-  c.supports.push_back(base);
-  StageSpec gravity{"gravity", {}, 2, std::nullopt, {0, "stages[0]"}};
-  gravity.loads.gravity = Vec2(0, -1);
-  c.stages.push_back(gravity);
+  c.supports.push_back(testing::base_of({0, 0}, {wall.bricks * wall.width, 0}, "dry"));
+  c.stages.push_back(testing::gravity_stage(2));
   return c;
 }
 
@@ -67,21 +60,8 @@ TEST(RunningBondWall, StandsUnderItsWeightForEveryFrictionAndDilation) {
         const std::string what = std::to_string(wall.bricks) + " x " +
                                  std::to_string(wall.courses) + ", phi " + std::to_string(phi) +
                                  ", psi " + std::to_string(psi);
-        const Model model = build_model(running_bond_wall(wall, phi, psi));
-        YieldPointIndex index;
-        const std::vector<YieldPoint> points = make_yield_points(model, &index);
-        double worst_balance = 0.0;
-        const PlasticResult r = run_plastic_analysis(
-            model, PlasticOptions{}, [&](const IncrementRecord& rec, const AnalysisState& state) {
-              const PlasticParts plastic{&index, &state.points};
-              const Vec2 load(0.0, -rec.stage_factor * weight);
-              const Vec2 reaction = testing::support_reaction(model, state.u, plastic);
-              worst_balance = std::max(worst_balance, (load + reaction).norm() / weight);
-            });
-        EXPECT_FALSE(r.stopped.has_value()) << what << ": " << r.stopped->reason;
-        EXPECT_FALSE(r.collapse.has_value()) << what;
-        EXPECT_NEAR(r.state.stage_factor, 1.0, 1e-12) << what;
-        EXPECT_LE(worst_balance, 1e-8) << what;
+        testing::expect_stands_under_weight(build_model(running_bond_wall(wall, phi, psi)), weight,
+                                            what);
       }
     }
   }

@@ -56,14 +56,9 @@ CaseSpec voussoirs(double friction_deg, double dilation_deg) {
   c.blocks = testing::blocks_of({Polygon{{{7.5, 0}, {12.5, 0}, {0, 12.5}, {0, 7.5}}},
                                  Polygon{{{0, 7.5}, {0, 12.5}, {-12.5, 0}, {-7.5, 0}}}});
   c.default_joint = "dry";
-  for (const double side : {1.0, -1.0}) {
-    SupportSpec springing = testing::fixed({7.5 * side, 0}, {12.5 * side, 0});
-    springing.joint_material = "dry";
-    c.supports.push_back(springing);
-  }
-  StageSpec gravity{"gravity", {}, 4, std::nullopt, {0, "stages[0]"}};
-  gravity.loads.gravity = Vec2(0, -1);
-  c.stages.push_back(gravity);
+  for (const double side : {1.0, -1.0})
+    c.supports.push_back(testing::base_of({7.5 * side, 0}, {12.5 * side, 0}, "dry"));
+  c.stages.push_back(testing::gravity_stage(4));
   return c;
 }
 
