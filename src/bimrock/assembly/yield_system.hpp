@@ -39,9 +39,9 @@ enum class FlowRule { as_modelled, associated, gradient_along_flow };
 /// Builds the yield rows of every mode of the given yield points at their current state.
 /// @param candidates indices into `points`
 /// @param toward_gradient turns each flow direction g by this fraction t toward its yield
-///        function's gradient a, g + t (a - g), before `flow` applies: 0 keeps the model's, and
-///        a small t gives an LCP near the model's whose flows are never exactly opposite
-///        (solve/increment_lcp.hpp, IncrementLcp::perturbed)
+///        function's gradient a, g + t (a - g), before `flow` applies: 0 keeps the model's, 1
+///        is associated flow, and a small t gives an LCP near the model's whose flows are never
+///        exactly opposite (solve/increment_lcp.hpp, IncrementLcp::perturbed)
 YieldSystem assemble_yield_system(const Model& model, const std::vector<YieldPoint>& points,
                                   const std::vector<PlasticState>& states, const Eigen::VectorXd& u,
                                   const std::vector<int>& candidates,
