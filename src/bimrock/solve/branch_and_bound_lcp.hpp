@@ -6,11 +6,11 @@
 ///
 /// A node holds some z_i = 0 and some w_i = 0. Its LP is either empty (no solution below it) or
 /// gives a vertex; a vertex with z_i w_i = 0 on every row is a solution (made exact by
-/// least_norm_pivoting(), and checked on the whole problem); otherwise the pair with the largest min(z_i, w_i) (each relative to
-/// its own scale) is branched: w_i = 0 (the row active) first where z_i is the larger, else
-/// z_i = 0 first. Every solution lies below one leaf, so a search in which every node ends
-/// empty proves that the LCP has no solution; an empty root gives, by Farkas' lemma, a
-/// certificate r >= 0 with M^T r <= 0 and q . r < 0.
+/// least_norm_pivoting(), and checked on the whole problem); otherwise the pair with the largest
+/// min(z_i, w_i) (each relative to its own scale) is branched: w_i = 0 (the row active) first where
+/// z_i is the larger, else z_i = 0 first. Every solution lies below one leaf, so a search in which
+/// every node ends empty proves that the LCP has no solution; an empty root gives, by Farkas'
+/// lemma, a certificate r >= 0 with M^T r <= 0 and q . r < 0.
 ///
 /// Lemke's method decides an LCP only for copositive-plus M: for non-associated flow
 /// (M = N - C K^-1 Phi not symmetric) its secondary ray proves nothing, and on the degenerate
