@@ -243,25 +243,26 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       solver.hold(blocks);
     }
     clock.lap("increments: condensation");
-    const YieldSystem sys =
-        assemble_yield_system(ctx.model, ctx.points, s.points, s.u, candidates.in_lcp(solver));
+    const std::vector<int> lcp_points = candidates.in_lcp(solver);
+    const YieldSystem sys = assemble_yield_system(ctx.model, ctx.points, s.points, s.u, lcp_points);
     clock.lap("increments: yield rows");
     t.lcp_size = sys.size();
     // Solve the increment's LCP.
     IncrementLcp lcp = round_lcp(ctx, sys, s, step, warm_rows);
     // Non-associated flow under load control: the symmetric part of the splitting that finds
-    // the active set (solve/symmetric_splitting.hpp).
+    // the active set (solve/symmetric_splitting.hpp), and the rows perturbed toward associated
+    // flow, assembled only where the solver asks for them (IncrementLcp::perturbed).
     const bool non_associated =
         !ctx.stage.control && sys.size() > 0 && !follows_associated_flow(sys);
     std::optional<YieldSystem> along_flow;
     if (non_associated && solver.tuning().splitting) {
-      along_flow = assemble_yield_system(ctx.model, ctx.points, s.points, s.u,
-                                         candidates.in_lcp(solver), FlowRule::gradient_along_flow);
+      along_flow = assemble_yield_system(ctx.model, ctx.points, s.points, s.u, lcp_points,
+                                         FlowRule::gradient_along_flow);
       lcp.along_flow = &*along_flow;
-      lcp.perturbed = [&ctx, &s, in_lcp = candidates.in_lcp(solver)](double fraction) {
-        return PerturbedRows{assemble_yield_system(ctx.model, ctx.points, s.points, s.u, in_lcp,
+      lcp.perturbed = [&ctx, &s, &lcp_points](double fraction) {
+        return PerturbedRows{assemble_yield_system(ctx.model, ctx.points, s.points, s.u, lcp_points,
                                                    FlowRule::as_modelled, fraction),
-                             assemble_yield_system(ctx.model, ctx.points, s.points, s.u, in_lcp,
+                             assemble_yield_system(ctx.model, ctx.points, s.points, s.u, lcp_points,
                                                    FlowRule::gradient_along_flow, fraction)};
       };
     }
