@@ -153,6 +153,19 @@ TEST(BranchAndBoundLcp, NonNegativeQIsSolvedByZero) {
   EXPECT_EQ(r.z, VectorXd::Zero(2));
 }
 
+// The root LP of LCP(I, -1) on 30 rows needs a pivot for each row it moves off the bound
+// z = 0. A budget of one pivot stops that LP, and the search ends as out of budget (not as a
+// round-off failure, nor a proof); the default budget solves it (z = 1).
+TEST(BranchAndBoundLcp, ANodesLpStopsAtTheBudgetLeft) {
+  const LcpProblem p{MatrixXd::Identity(30, 30), VectorXd::Constant(30, -1.0)};
+  BranchAndBoundLcp tight(BranchAndBoundOptions{.max_work = 1.0});
+  const LcpResult stopped = tight.solve(p);
+  EXPECT_EQ(stopped.status, LcpStatus::iteration_limit) << to_string(stopped.status);
+  const LcpResult r = search(p);
+  expect_solved_measured(p, r);
+  EXPECT_TRUE(r.z.isApprox(VectorXd::Ones(30), 1e-12));
+}
+
 TEST(BranchAndBoundLcp, RefusesLcpsLargerThanItsLimit) {
   BranchAndBoundLcp solver(BranchAndBoundOptions{.max_size = 3});
   const LcpProblem p{MatrixXd::Identity(4, 4), VectorXd::Constant(4, -1.0)};

@@ -1,5 +1,6 @@
 // The LCP data object, its residuals and the reach of an infeasibility certificate. Expected
 // numbers are worked by hand (and the certificate's reach is checked with Lemke as well).
+#include <cmath>
 #include <limits>
 #include <sstream>
 
@@ -103,6 +104,22 @@ TEST(CertifiedFrom, IsWhereTheLoadMakesTheCertificateHold) {
   // A load that does not drive the mechanism (q . r grows with it: at no step q . r = -4)
   // proves no less than the step itself.
   EXPECT_EQ(certified_from(VectorXd{{-3.0, 1.0}}, VectorXd{{1.0, 1.0}}, r), 1.0);
+}
+
+// q and s q with s > 0 are one LCP; a negative multiple, a q changed in one entry by 1e-9,
+// or an M changed in its last bit are not.
+TEST(LcpProblem, SameUpToScaleIsAPositiveMultipleOfQWithTheSameM) {
+  const LcpProblem scaled{kProblem.m, 3.5 * kProblem.q};
+  EXPECT_TRUE(same_up_to_scale(kProblem, scaled));
+  EXPECT_TRUE(same_up_to_scale(scaled, kProblem));
+  EXPECT_FALSE(same_up_to_scale(kProblem, {kProblem.m, -kProblem.q}));
+  LcpProblem moved = scaled;
+  moved.q(1) += 1e-9;
+  EXPECT_FALSE(same_up_to_scale(kProblem, moved));
+  LcpProblem other_m = scaled;
+  other_m.m(0, 1) = std::nextafter(other_m.m(0, 1), 2.0);
+  EXPECT_FALSE(same_up_to_scale(kProblem, other_m));
+  EXPECT_FALSE(same_up_to_scale(kProblem, {MatrixXd::Identity(3, 3), VectorXd::Ones(3)}));
 }
 
 }  // namespace

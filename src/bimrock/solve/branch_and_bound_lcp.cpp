@@ -38,13 +38,17 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
   bool complete = true;  // every node so far decided (none failed)
   int nodes = 0;
   Eigen::VectorXd last = Eigen::VectorXd::Zero(n);
+  const auto work = [&] {
+    return nodes * per_node + static_cast<double>(polyhedron.pivots()) * per_pivot;
+  };
   while (!stack.empty()) {
-    const double work = nodes * per_node + static_cast<double>(polyhedron.pivots()) * per_pivot;
-    if (nodes >= options_.max_nodes || work > options_.max_work)
+    if (nodes >= options_.max_nodes || work() > options_.max_work)
       return make_lcp_result(problem, LcpStatus::iteration_limit, last, nodes);
     const std::vector<Fix> fix = std::move(stack.back());
     stack.pop_back();
-    const LcpPolyhedron::Vertex v = polyhedron.vertex(fix);
+    // A node's LP gets what is left of the budget: one that stalls ends the search there.
+    const auto pivots_left = static_cast<long>((options_.max_work - work()) / per_pivot) + 1;
+    const LcpPolyhedron::Vertex v = polyhedron.vertex(fix, pivots_left);
     ++nodes;
     if (v.status == LcpPolyhedron::Status::failed) {
       complete = false;
@@ -94,8 +98,10 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
     stack.push_back(z_first ? std::move(keep_w) : std::move(keep_z));
     stack.push_back(z_first ? std::move(keep_z) : std::move(keep_w));
   }
-  return make_lcp_result(problem, complete ? LcpStatus::no_solution : LcpStatus::numerical_failure,
-                         last, nodes);
+  const LcpStatus status = complete                     ? LcpStatus::no_solution
+                           : work() > options_.max_work ? LcpStatus::iteration_limit
+                                                        : LcpStatus::numerical_failure;
+  return make_lcp_result(problem, status, last, nodes);
 }
 
 }  // namespace bimrock

@@ -29,7 +29,9 @@ struct BranchAndBoundOptions {
   /// max_work, counted as n^3 / 3 per node (the LP's basis factorized again) plus n^2 per
   /// simplex pivot on an LCP of n rows: a few seconds. A search that cannot end soon so ends as
   /// an unproven failure (measured: proofs of no solution take 3 000 - 5 000 nodes of ~10
-  /// pivots on 60 rows, ~4e8; a 400-row node costs ~2e7).
+  /// pivots on 60 rows, ~4e8; a 400-row node costs ~2e7). A node's LP is stopped where it
+  /// would pass the budget: one LP stalled on a degenerate vertex can otherwise cost more than
+  /// the whole search.
   int max_nodes = 20000;
   double max_work = 1e9;
   /// Larger LCPs are not searched (iteration_limit).
@@ -44,7 +46,7 @@ class BranchAndBoundLcp final : public LcpSolver {
   [[nodiscard]] std::string name() const override { return "branch-and-bound"; }
   /// solved; no_solution when the search proves there is none (with the Farkas certificate as
   /// the ray where the root LP is empty, without a ray where every leaf is); iteration_limit
-  /// past max_nodes or max_size; numerical_failure where an LP failed and left the search
+  /// past max_nodes, max_work or max_size; numerical_failure where an LP failed and left the search
   /// incomplete. `steps` counts the nodes. The warm start is ignored.
   [[nodiscard]] LcpResult solve(const LcpProblem& problem,
                                 const Eigen::VectorXd* warm_start = nullptr) override;

@@ -460,8 +460,11 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
       if (std::optional<LcpResult> near = from_perturbed(lcp, dense, out))
         r = std::move(*near);
     }
-    if (!decided(r))
+    if (!decided(r) && !(undecided_ && same_up_to_scale(*undecided_, dense))) {
       r = complete_.solve(dense);
+      if (!decided(r))
+        undecided_ = dense;
+    }
   }
   if (tuning_.active_set && !decided(r) && lcp.control) {
     // Displacement control, where every method above has left the increment undecided (M is

@@ -161,6 +161,10 @@ class IncrementSolver {
   RetrySchedule dense_first_;    // of the dense active block first
   Lemke lemke_;
   BranchAndBoundLcp complete_;
+  // The last LCP that branch and bound left undecided, not searched again up to a scale of q:
+  // the bisected first increment of a load on a stress-free state (q in proportion to the
+  // step, the candidate rows the same) asks it again and again.
+  std::optional<LcpProblem> undecided_;
 };
 
 }  // namespace bimrock

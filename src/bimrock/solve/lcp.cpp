@@ -104,6 +104,16 @@ LcpResiduals measure(const Eigen::VectorXd& z, const Eigen::VectorXd& w, const E
   return r;
 }
 
+bool same_up_to_scale(const LcpProblem& a, const LcpProblem& b) {
+  if (a.size() != b.size() || a.m.rows() != b.m.rows() || a.m.cols() != b.m.cols() || a.m != b.m)
+    return false;
+  const double aa = a.q.squaredNorm();
+  const double s = aa > 0.0 ? a.q.dot(b.q) / aa : 0.0;
+  if (!(s > 0.0))
+    return aa == 0.0 && b.q.squaredNorm() == 0.0;
+  return (b.q - s * a.q).cwiseAbs().maxCoeff() <= 1e-12 * b.q.cwiseAbs().maxCoeff();
+}
+
 RelativePairs relative_pairs(const LcpProblem& problem, const Eigen::VectorXd& z) {
   const Eigen::VectorXd w = problem.m * z + problem.q;
   const Eigen::VectorXd s = problem.m.cwiseAbs() * z.cwiseAbs() + problem.q.cwiseAbs();

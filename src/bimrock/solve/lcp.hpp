@@ -99,6 +99,11 @@ struct LcpResult {
 [[nodiscard]] double certified_from(const Eigen::VectorXd& q, const Eigen::VectorXd& dq,
                                     const Eigen::VectorXd& r);
 
+/// Whether b is a, up to a positive scale of q: the same M, and q_b = s q_a with s > 0 to a
+/// relative 1e-12. Such LCPs are one question: z solves LCP(M, q) exactly when s z solves
+/// LCP(M, s q), and a certificate of one certifies the other.
+[[nodiscard]] bool same_up_to_scale(const LcpProblem& a, const LcpProblem& b);
+
 /// The interface every LCP solver implements, so Lemke, projected Gauss-Seidel and later a
 /// sparse or distributed backend sit side by side and are compared on the same problems.
 class LcpSolver {

@@ -13,6 +13,7 @@
 /// nodes. GLPK's own scaling is not used: on the degenerate LCPs of cohesionless joints (rank
 /// 6 of 18) it made the simplex call feasible nodes empty, which the same LP unscaled, and the
 /// exact rational simplex, found feasible.
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -38,8 +39,10 @@ class LcpPolyhedron {
 
   /// A vertex with the rows held as `fix` says (one entry per row), the one of least
   /// sum of z_i + w_i over the free rows (in the scaled units): the objective pulls both of a
-  /// pair towards zero. `failed` where the simplex gave up (round-off).
-  [[nodiscard]] Vertex vertex(const std::vector<Fix>& fix);
+  /// pair towards zero. `failed` where the simplex gave up (round-off, or a stall on a
+  /// degenerate vertex), or would need more than `max_pivots`.
+  [[nodiscard]] Vertex vertex(const std::vector<Fix>& fix,
+                              long max_pivots = std::numeric_limits<long>::max());
 
   /// Simplex pivots of every vertex() so far: each costs about n^2 on this dense LP.
   [[nodiscard]] long pivots() const;
