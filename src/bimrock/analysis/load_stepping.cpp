@@ -1,5 +1,6 @@
 #include <bimrock/analysis/load_stepping.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace bimrock {
@@ -14,6 +15,9 @@ constexpr double kAimAtBound = 0.9;
 constexpr int kMostKinks = 100;
 /// Undecided trials once a failure is proven: then the bracket stands (see below).
 constexpr int kUndecidedInBracket = 3;
+/// Under displacement control, cuts of a failed step at most: a thousandth of the planned step
+/// that still fails ends the stage (each cut costs a solve, and no load is bracketed).
+constexpr int kMostDisplacementCuts = 10;
 /// After a numerical failure, the parts carried grow by this factor each.
 constexpr double kGrowth = 2.0;
 /// Trials of one increment, carried or not, at most this many per bisection allowed.
@@ -77,13 +81,19 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   // bisections only as a bound on the trials.
   int cuts = 0;
   int trials = 0;
+  const int most_cuts = options.displacement_control
+                            ? std::min(options.max_bisections, kMostDisplacementCuts)
+                            : options.max_bisections;
   const auto go_on = [&] {
-    return cuts < options.max_bisections && trials < kTrialsPerBisection * options.max_bisections &&
-           remaining > 0.0 && !unstable_at_start();
+    return cuts < most_cuts && trials < kTrialsPerBisection * most_cuts && remaining > 0.0 &&
+           !unstable_at_start();
   };
   for (; go_on(); ++trials) {
+    // Under displacement control the step is a displacement and no load is bracketed: the
+    // failed step is cut until a part carries, or the cuts run out.
     const double upper = proven ? *proven : out.carried + failing_step;
-    if (std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper))
+    if (!options.displacement_control &&
+        std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper))
       break;
     // After a numerical failure and a part carried, the rest is tried again whole; where that
     // fails too, the next parts grow from the last one instead (near a limit load the steps
