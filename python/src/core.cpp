@@ -435,6 +435,9 @@ py::object collapse_of(const Result& r) {
   out["failed_factor"] = c.failed;
   out["unstable_at_first_load"] = c.unstable_at_first_load;
   out["undecided_inside"] = c.undecided_inside;
+  out["limit_point"] = c.limit_point;
+  out["limit_point_plateau_m"] = c.plateau;
+  out["limit_point_elastic_m"] = c.elastic;
   out["mechanism"] = mechanism_of(*r.model, c);
   return py::object(std::move(out));
 }

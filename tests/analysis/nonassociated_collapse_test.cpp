@@ -75,12 +75,39 @@ TEST(NonAssociatedCollapse, DisplacementControlPlateausWhereLoadControlProvesThe
   }
 }
 
-// Where no solver may decide an increment (here: every LCP on the tangent, and no dense route
-// or complete method behind it), the analysis stops, keeps what it carried, and says what to try.
+// Where no solver decides a load-controlled increment (here: every LCP on the tangent, and no
+// dense route or complete method behind it), displacement control of the block that moved most
+// follows the path to its limit point. Its plateau is the collapse load that the complete
+// method's exhausted searches prove with the default routes.
+TEST(NonAssociatedCollapse, AnUndecidedIncrementIsFollowedToTheLimitPoint) {
+  const Collapse proven = pull_out_collapse(30.0, 0.0);
+  PlasticTuning tangent_only;
+  tangent_only.solver.reduced_tangent_rows = 0;
+  tangent_only.solver.dense_fallback_rows = 0;
+  const PlasticResult r =
+      run_plastic_analysis(build_model(pull_out_case(30.0, 0.0)), {}, {}, tangent_only);
+  ASSERT_FALSE(r.stopped.has_value()) << r.stopped->reason;
+  ASSERT_TRUE(r.collapse.has_value());
+  const Collapse& c = *r.collapse;
+  EXPECT_TRUE(c.limit_point);
+  EXPECT_EQ(c.carried, c.failed);
+  EXPECT_GE(c.carried, proven.carried * (1.0 - 1e-4));
+  EXPECT_LE(c.carried, proven.failed * (1.0 + 1e-4));
+  EXPECT_FALSE(c.mechanism.empty());
+  // None of the pull's increments carried more than the limit load.
+  for (const IncrementRecord& k : r.history)
+    if (k.stage == c.stage) {
+      EXPECT_LE(k.stage_factor, c.carried);
+    }
+}
+
+// Without that search (and no solver to decide the increment), the analysis stops, keeps what
+// it carried, and says what to try.
 TEST(NonAssociatedCollapse, AnUndecidedIncrementStopsAndSaysWhatToTry) {
   PlasticTuning tangent_only;
   tangent_only.solver.reduced_tangent_rows = 0;
   tangent_only.solver.dense_fallback_rows = 0;
+  tangent_only.limit_point_increments = 0;
   const PlasticResult r =
       run_plastic_analysis(build_model(pull_out_case(30.0, 0.0)), {}, {}, tangent_only);
   ASSERT_TRUE(r.stopped.has_value());

@@ -14,7 +14,8 @@ struct MechanismEntry {
 };
 
 /// The structure could not carry a load increment: the collapse load lies in
-/// [carried, failed] (stage factors) and the mechanism is that of the last carried step.
+/// [carried, failed] (stage factors) and the mechanism is that of the last carried step, or
+/// the load factor reached the peak of its equilibrium path (limit_point).
 struct Collapse {
   int stage = 0;
   double carried = 0.0;
@@ -29,6 +30,13 @@ struct Collapse {
   /// fail; analysis/load_stepping.hpp): the bracket is wider than the tolerance. Non-associated
   /// flow proven by associated flow's certificate ends so, between its two limit loads.
   bool undecided_inside = false;
+  /// The limit point of the equilibrium path: load control left a load undecided, and under
+  /// displacement control the load factor levelled off or fell (analysis/limit_point.hpp).
+  /// carried = failed = its largest value; the mechanism is the flow of the last increment.
+  bool limit_point = false;
+  int control_block = -1;  ///< limit_point: the block whose motion was prescribed
+  double plateau = 0.0;    ///< limit_point: how far its centroid moved at the limit load [m]
+  double elastic = 0.0;    ///< limit_point: how far the stage's whole load moves it elastically [m]
 };
 
 }  // namespace bimrock

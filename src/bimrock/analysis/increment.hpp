@@ -32,6 +32,10 @@ struct StageContext {
   Eigen::VectorXd control;      // displacement control: u_monitor . direction = control . U
   double control_rate = 0.0;    // control . x_ref
   Timings* timings = nullptr;   // phases of the increments: candidates, yield rows, LCP, check
+  int control_block = -1;       // displacement control: the block the monitored point is on
+  /// Under displacement control (the stage's, or one that follows a limit point): each step
+  /// prescribes control . dU, and the load factor is found.
+  [[nodiscard]] bool controlled() const { return control.size() > 0; }
 };
 
 /// What an increment hands on to the next: the warm start of its LCPs, and counters.

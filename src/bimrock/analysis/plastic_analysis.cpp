@@ -14,6 +14,7 @@
 #include <bimrock/analysis/increment.hpp>
 #include <bimrock/analysis/initial_state.hpp>
 #include <bimrock/analysis/installation.hpp>
+#include <bimrock/analysis/limit_point.hpp>
 #include <bimrock/analysis/load_stepping.hpp>
 #include <bimrock/analysis/stage_structure.hpp>
 #include <bimrock/analysis/support_check.hpp>
@@ -66,6 +67,7 @@ StageContext stage_context(const Model& model, const std::vector<YieldPoint>& po
   }
   if (stage.control) {
     const Monitor& m = model.monitors[stage.control->monitor];
+    ctx.control_block = m.block;
     ctx.control = Eigen::VectorXd::Zero(model.n_dofs());
     ctx.control.segment<6>(6 * m.block) =
         block_Q(model.blocks[m.block].centroid, m.point).transpose() * stage.control->direction;
@@ -102,14 +104,44 @@ bool has_nonassociated_flow(const Model& model) {
   return false;
 }
 
+// A load-controlled stage left undecided: the rest of it under displacement control of the block
+// that moved most in the last increment carried (`moved`), along its motion
+// (analysis/limit_point.hpp). Undecided where the stage's load does not move that block
+// elastically along its motion.
+LimitPoint follow_past_undecided(const StageContext& ctx, const Eigen::VectorXd& moved,
+                                 const AnalysisState& from, const CarryStep& carry,
+                                 const TryStep& controlled_step, StageContext& controlled,
+                                 LimitPointOptions options) {
+  const ControlPoint at = most_moved_block(ctx.model, moved);
+  LimitPoint none;
+  none.peak = from.stage_factor;
+  if (at.block < 0)
+    return none;
+  controlled.control = Eigen::VectorXd::Zero(ctx.model.n_dofs());
+  controlled.control.segment<2>(6 * static_cast<Eigen::Index>(at.block)) = at.direction;
+  controlled.control_rate = controlled.control.dot(ctx.x_ref);
+  controlled.control_block = at.block;
+  const double motion = ctx.x_ref.segment<2>(6 * static_cast<Eigen::Index>(at.block)).norm();
+  if (!(controlled.control_rate > 1e-6 * motion && motion > 0.0))
+    return none;
+  // A plateau as long as the stage's whole load moves the point elastically: its motion is then
+  // at least half plastic. Its steps are at most a tenth of that.
+  options.plateau = controlled.control_rate;
+  options.step = controlled.control_rate / std::max(ctx.stage.increments, 10);
+  return follow_to_limit_point(from.stage_factor, controlled_step, carry, options);
+}
+
 // Neither carried nor proven to fail: near a limit load the LCP is nearly singular, and with
 // non-associated flow the splitting can fail to converge below it as well. The analysis stops,
 // with every carried increment kept, and says what to try.
-Stop undecided_stop(const Model& model, int stage_index, const Stage& stage, double carried) {
+Stop undecided_stop(const Model& model, int stage_index, const Stage& stage, double carried,
+                    bool searched) {
   std::string what_to_try =
       stage.control ? "; try more increments in this stage"
                     : "; to pass a limit load, prescribe a monitor's displacement in this stage "
                       "instead (stages[].control, docs/case-file.md)";
+  if (searched)
+    what_to_try += " (displacement control of the block that moved most found no limit point)";
   std::string why = "the structure is close to a limit load";
   if (has_nonassociated_flow(model)) {
     why += ", or with dilation below friction the increment is beyond the solver's reach";
@@ -201,9 +233,10 @@ bool carry_pretension(const Model& model, int st, StageStructure& structure,
 // its increments; a stage that installs bolts first jacks their pretension against the structure
 // without them, then locks them off and stands on K with them.
 void run_stages(const Model& model, StageStructure& structure, const YieldPointIndex& index,
-                const PlasticOptions& options, const CandidateTuning& tuning,
+                const PlasticOptions& options, const PlasticTuning& plastic_tuning,
                 IncrementMemory& memory, const IncrementCallback& on_increment,
                 PlasticResult& result, const std::function<void(int)>& at_stage_end = {}) {
+  const CandidateTuning& tuning = plastic_tuning.candidates;
   Eigen::VectorXd unbalanced;  // by the initial stress's points held to their strengths
   result.state = initial_state(model, result.points, unbalanced);
   structure.stand_on(presence_at(model, -1));
@@ -264,14 +297,45 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
                              stage.control.has_value(), false};
     if (!stage.control)
       stepping.stage_end = 1.0;
+    // Load control past a limit point's search whose load rose past the stage's end: the
+    // increments left reach the stage's end exactly.
+    bool off_grid = false;
     for (int n = 0; n < stage.increments; ++n) {
       SteppingOptions these = stepping;
       these.first_load = st == 0 && result.history.empty();
       part_start = std::chrono::steady_clock::now();
+      const double this_step = off_grid ? std::min(step, 1.0 - result.state.stage_factor) : step;
+      if (!(this_step > 0.0))
+        break;
       const SteppedIncrement done =
-          step_increment(step, result.state.stage_factor, try_step, carry, these);
+          step_increment(this_step, result.state.stage_factor, try_step, carry, these);
+      if (done.outcome == SteppedIncrement::Outcome::undecided && !stage.control &&
+          plastic_tuning.limit_point_increments > 0) {
+        StageContext controlled = ctx;
+        const TryStep controlled_step = [&](double s, Thoroughness thoroughness) {
+          return solve_increment(controlled, result.state, s, options, tuning, structure.solver(),
+                                 memory, thoroughness);
+        };
+        const LimitPoint past = follow_past_undecided(
+            ctx, last ? last->du : ctx.x_ref, result.state, carry, controlled_step, controlled,
+            {.stepping = stepping, .most_increments = plastic_tuning.limit_point_increments});
+        if (past.outcome == LimitPoint::Outcome::rises) {
+          off_grid = true;
+          continue;
+        }
+        if (past.outcome == LimitPoint::Outcome::limit_point) {
+          result.collapse = describe_collapse(st, past.peak, past.peak, nullptr, &*past.last);
+          result.collapse->limit_point = true;
+          result.collapse->control_block = controlled.control_block;
+          result.collapse->plateau = past.plateau;
+          result.collapse->elastic = controlled.control_rate;
+          return;
+        }
+      }
       if (done.outcome == SteppedIncrement::Outcome::undecided) {
-        result.stopped = undecided_stop(model, st, stage, done.carried);
+        result.stopped =
+            undecided_stop(model, st, stage, result.state.stage_factor,
+                           !stage.control && plastic_tuning.limit_point_increments > 0);
         return;
       }
       if (done.outcome == SteppedIncrement::Outcome::collapse) {
@@ -292,7 +356,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
 // again from the start with the strengths raised.
 FactorOfSafety factor_below_one(const Model& model, int fos_stage, StageStructure& structure,
                                 const YieldPointIndex& index, const PlasticOptions& options,
-                                const CandidateTuning& tuning, IncrementMemory& memory,
+                                const PlasticTuning& tuning, IncrementMemory& memory,
                                 PlasticResult& result, const FactorTrialCallback& on_trial) {
   Model until = model;
   until.stages.resize(static_cast<std::size_t>(fos_stage) + 1);
@@ -337,7 +401,7 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   StageStructure structure(model, tuning.solver, tuning.stiffness, result.timings);
   IncrementMemory memory;
   if (!options.factor_of_safety) {
-    run_stages(model, structure, index, options, tuning.candidates, memory, on_increment, result);
+    run_stages(model, structure, index, options, tuning, memory, on_increment, result);
     return with_statistics(std::move(result), structure, memory);
   }
   // The factor of safety after its stage (by default the last), from the state reached there;
@@ -353,12 +417,12 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
         structure.solver(), memory, result.timings, on_factor_trial, &structure.present());
     result.factor_of_safety->stage = fos_stage;
   };
-  run_stages(model, structure, index, options, tuning.candidates, memory, on_increment, result,
+  run_stages(model, structure, index, options, tuning, memory, on_increment, result,
              factor_of_safety_after);
   if (result.collapse && result.collapse->stage <= fos_stage) {
     ScopedTimer t(result.timings, "(factor of safety)");
-    result.factor_of_safety = factor_below_one(model, fos_stage, structure, index, options,
-                                               tuning.candidates, memory, result, on_factor_trial);
+    result.factor_of_safety = factor_below_one(model, fos_stage, structure, index, options, tuning,
+                                               memory, result, on_factor_trial);
   }
   return with_statistics(std::move(result), structure, memory);
 }

@@ -33,6 +33,10 @@ struct PlasticTuning {
   /// PETSc backend's factorizes it across the processes of an MPI run
   /// (petsc/distributed_factor.hpp).
   StiffnessFactorization stiffness{};
+  /// Where load control leaves a load undecided, at most this many increments of displacement
+  /// control look for the limit point of the equilibrium path (analysis/limit_point.hpp); 0:
+  /// the analysis stops there.
+  int limit_point_increments = 100;
 };
 
 }  // namespace bimrock

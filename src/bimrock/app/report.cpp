@@ -113,10 +113,19 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
           "UNSTABLE under the first load of stage '{}': no equilibrium from factor {:.3g} of it "
           "on",
           stage.name, c.failed);
+    else if (c.limit_point)
+      fmt::print(
+          "COLLAPSE in stage '{}': limit load at factor {:.6f}, the peak of the equilibrium path "
+          "(past the last load carried under load control, displacement control of block {}: "
+          "the load stayed there while it moved {:.3g} m; the stage's whole load moves it {:.3g} "
+          "m elastically)",
+          stage.name, c.carried, c.control_block, c.plateau, c.elastic);
     else
       fmt::print("COLLAPSE in stage '{}': carried factor {:.6f}, failed at {:.6f}", stage.name,
                  c.carried, c.failed);
-    if (load.norm() > 0.0 && !c.unstable_at_first_load)
+    if (load.norm() > 0.0 && c.limit_point)
+      fmt::print(" (point load {:.6g} N)", c.carried * load.norm());
+    else if (load.norm() > 0.0 && !c.unstable_at_first_load)
       fmt::print(" (point load between {:.6g} N and {:.6g} N)", c.carried * load.norm(),
                  c.failed * load.norm());
     fmt::print("; {} yield modes in the mechanism (summary.json, collapse.png)\n",

@@ -196,6 +196,9 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                        {"failed_point_load_N", c.failed * load},
                        {"unstable_at_first_load", c.unstable_at_first_load},
                        {"undecided_inside", c.undecided_inside},
+                       {"limit_point", c.limit_point},
+                       {"limit_point_plateau_m", c.plateau},
+                       {"limit_point_elastic_m", c.elastic},
                        {"mechanism", mechanism_json(model, plastic->points, c, joints)},
                        {"mechanism_joints", mechanism_joints_json(plastic->points, joints)}};
       if (c.direction.size() == model.n_dofs())
