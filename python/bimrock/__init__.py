@@ -190,7 +190,8 @@ class Result:
         undecided_inside (the bracket is wider than its tolerance), limit_point (the peak of the
         equilibrium path, followed under displacement control: carried_factor = failed_factor),
         limit_point_plateau_m and limit_point_elastic_m (how far the controlled block moved at
-        that peak, and under the stage's whole load elastically), and mechanism: yield_point,
+        that peak, and under the stage's whole load elastically), limit_point_fell (the load
+        fell past the peak), and mechanism: yield_point,
         mode, multiplier (arrays), block_velocities (n, 6), block_speeds, block_states ('moves',
         'rotates', 'stands')."""
         return self._core.collapse

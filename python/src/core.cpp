@@ -438,6 +438,7 @@ py::object collapse_of(const Result& r) {
   out["limit_point"] = c.limit_point;
   out["limit_point_plateau_m"] = c.plateau;
   out["limit_point_elastic_m"] = c.elastic;
+  out["limit_point_fell"] = c.fell;
   out["mechanism"] = mechanism_of(*r.model, c);
   return py::object(std::move(out));
 }

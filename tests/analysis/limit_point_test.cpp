@@ -56,6 +56,7 @@ TEST(LimitPoint, APlateauIsTheLimitLoad) {
   ASSERT_EQ(p.outcome, LimitPoint::Outcome::limit_point);
   EXPECT_DOUBLE_EQ(p.peak, 0.8);
   EXPECT_NEAR(p.plateau, 0.12, 1e-12);
+  EXPECT_FALSE(p.fell);
   EXPECT_NEAR(path.d, 1.14, 1e-12);
   ASSERT_TRUE(p.last.has_value());
   EXPECT_EQ(path.carried.size(), 6u);
@@ -95,6 +96,7 @@ TEST(LimitPoint, ThePeakOfAFallingPathIsTheLimitLoad) {
   ASSERT_EQ(p.outcome, LimitPoint::Outcome::limit_point);
   EXPECT_NEAR(p.peak, 0.9, 1e-12);
   EXPECT_LT(path.factor, p.peak);  // it went past the peak, to show it was one
+  EXPECT_TRUE(p.fell);
   EXPECT_LE(path.d, 1.2 + 1e-12);
 }
 

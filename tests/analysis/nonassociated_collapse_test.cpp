@@ -94,11 +94,22 @@ TEST(NonAssociatedCollapse, AnUndecidedIncrementIsFollowedToTheLimitPoint) {
   EXPECT_GE(c.carried, proven.carried * (1.0 - 1e-4));
   EXPECT_LE(c.carried, proven.failed * (1.0 + 1e-4));
   EXPECT_FALSE(c.mechanism.empty());
-  // None of the pull's increments carried more than the limit load.
-  for (const IncrementRecord& k : r.history)
-    if (k.stage == c.stage) {
-      EXPECT_LE(k.stage_factor, c.carried);
+  // None of the pull's increments carried more than the limit load, and on its plateau the
+  // pulled half-brick (monitor A) slides at least as far as the pull moves it elastically.
+  double first = 0.0;
+  double last = 0.0;
+  for (const IncrementRecord& k : r.history) {
+    if (k.stage != c.stage)
+      continue;
+    EXPECT_LE(k.stage_factor, c.carried);
+    if (k.stage_factor >= c.carried * (1.0 - 1e-4)) {
+      first = first == 0.0 ? k.monitors[0].x() : first;
+      last = k.monitors[0].x();
     }
+  }
+  EXPECT_GT(c.elastic, 0.0);
+  EXPECT_GE(c.plateau, c.elastic * (1.0 - 1e-9));
+  EXPECT_GE(last - first, 0.5 * c.elastic) << "plateau from " << first << " to " << last;
 }
 
 // Without that search (and no solver to decide the increment), the analysis stops, keeps what

@@ -36,6 +36,7 @@ struct Collapse {
   bool limit_point = false;
   int control_block = -1;  ///< limit_point: the block whose motion was prescribed
   double plateau = 0.0;    ///< limit_point: how far its centroid moved at the limit load [m]
+  bool fell = false;       ///< limit_point: the load factor fell past its peak
   double elastic = 0.0;    ///< limit_point: how far the stage's whole load moves it elastically [m]
 };
 

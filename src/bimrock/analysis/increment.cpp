@@ -17,8 +17,7 @@ constexpr double kMechanismRatio = 1e6;
 
 // The elastic predictor: the increment if nothing yielded (eq. 24 with lambda = 0).
 Eigen::VectorXd elastic_increment(const StageContext& ctx, double step) {
-  const bool control = ctx.stage.control.has_value();
-  return (control ? step / ctx.control_rate : step) * ctx.x_ref;
+  return (ctx.controlled() ? step / ctx.control_rate : step) * ctx.x_ref;
 }
 
 // The largest violation of any yield function (unscaled, in Pa) and the points that violate them
@@ -107,7 +106,7 @@ std::set<std::pair<int, int>> next_warm_rows(const YieldSystem& sys, const Eigen
 // open joints.
 IncrementLcp round_lcp(const StageContext& ctx, const YieldSystem& sys, const AnalysisState& s,
                        double step, const std::set<std::pair<int, int>>& warm_rows) {
-  const bool control = ctx.stage.control.has_value();
+  const bool control = ctx.controlled();
   const Eigen::VectorXd cx = sys.c * ctx.x_ref;
   const double load = control ? step / ctx.control_rate : step;
   IncrementLcp lcp{sys, ctx.points, -sys.f0 - cx * load, {}, {}, nullptr, {}, {}, nullptr, {}};
@@ -171,7 +170,7 @@ struct IterateCheck {
 // ones of the same step are that mechanism.
 bool round_off_mechanism(const StageContext& ctx, const AnalysisState& s,
                          const Eigen::VectorXd& plastic_du, double step) {
-  if (ctx.stage.control)
+  if (ctx.controlled())
     return false;
   // A step of no load (strength reduction) is measured against the displacements so far.
   const double elastic = std::abs(step) * ctx.x_ref.cwiseAbs().maxCoeff();
@@ -238,8 +237,8 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
     // monitor's.
     std::vector<char> blocks = candidates.required_blocks();
     if (std::find(blocks.begin(), blocks.end(), 1) != blocks.end()) {
-      if (ctx.stage.control)
-        blocks[static_cast<std::size_t>(ctx.model.monitors[ctx.stage.control->monitor].block)] = 1;
+      if (ctx.controlled())
+        blocks[static_cast<std::size_t>(ctx.control_block)] = 1;
       solver.hold(blocks);
     }
     clock.lap("increments: condensation");
@@ -253,7 +252,7 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
     // the active set (solve/symmetric_splitting.hpp), and the rows perturbed toward associated
     // flow, assembled only where the solver asks for them (IncrementLcp::perturbed).
     const bool non_associated =
-        !ctx.stage.control && sys.size() > 0 && !follows_associated_flow(sys);
+        !ctx.controlled() && sys.size() > 0 && !follows_associated_flow(sys);
     std::optional<YieldSystem> along_flow;
     if (non_associated && solver.tuning().splitting) {
       along_flow = assemble_yield_system(ctx.model, ctx.points, s.points, s.u, lcp_points,
@@ -364,7 +363,7 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       return collapse(sys, lambda.cwiseAbs() / top, ctx, std::move(t));
     }
     const double dfactor =
-        ctx.stage.control ? (step - ctx.control.dot(plastic_du)) / ctx.control_rate : step;
+        ctx.controlled() ? (step - ctx.control.dot(plastic_du)) / ctx.control_rate : step;
     t.du = dfactor * ctx.x_ref + plastic_du;
     t.next = s;
     t.next.u += t.du;

@@ -78,6 +78,7 @@ LimitPoint follow_to_limit_point(double factor, const TryStep& try_controlled,
     const double band = tolerance * std::abs(out.peak);
     if (current < out.peak - band) {
       out.outcome = LimitPoint::Outcome::limit_point;  // past the peak
+      out.fell = true;
       return out;
     }
     if (current > out.peak + band) {

@@ -54,6 +54,7 @@ struct LimitPoint {
   Outcome outcome = Outcome::undecided;
   double peak = 0.0;     ///< the largest stage factor carried
   double plateau = 0.0;  ///< how far the point moved with the load factor at its peak
+  bool fell = false;     ///< limit_point: the load factor fell past its peak
   /// The last increment carried under displacement control: at a limit point, its flow is
   /// the mechanism.
   std::optional<Trial> last;

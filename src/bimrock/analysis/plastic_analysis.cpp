@@ -328,6 +328,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
           result.collapse->limit_point = true;
           result.collapse->control_block = controlled.control_block;
           result.collapse->plateau = past.plateau;
+          result.collapse->fell = past.fell;
           result.collapse->elastic = controlled.control_rate;
           return;
         }

@@ -117,9 +117,10 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
       fmt::print(
           "COLLAPSE in stage '{}': limit load at factor {:.6f}, the peak of the equilibrium path "
           "(past the last load carried under load control, displacement control of block {}: "
-          "the load stayed there while it moved {:.3g} m; the stage's whole load moves it {:.3g} "
-          "m elastically)",
-          stage.name, c.carried, c.control_block, c.plateau, c.elastic);
+          "the load {} while it moved {:.3g} m; the stage's whole load moves it {:.3g} m "
+          "elastically)",
+          stage.name, c.carried, c.control_block,
+          c.fell ? "fell past the peak after staying there" : "stayed there", c.plateau, c.elastic);
     else
       fmt::print("COLLAPSE in stage '{}': carried factor {:.6f}, failed at {:.6f}", stage.name,
                  c.carried, c.failed);

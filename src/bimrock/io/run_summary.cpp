@@ -199,6 +199,7 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                        {"limit_point", c.limit_point},
                        {"limit_point_plateau_m", c.plateau},
                        {"limit_point_elastic_m", c.elastic},
+                       {"limit_point_fell", c.fell},
                        {"mechanism", mechanism_json(model, plastic->points, c, joints)},
                        {"mechanism_joints", mechanism_joints_json(plastic->points, joints)}};
       if (c.direction.size() == model.n_dofs())
