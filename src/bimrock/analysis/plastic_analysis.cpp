@@ -330,6 +330,8 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
           result.collapse->plateau = past.plateau;
           result.collapse->fell = past.fell;
           result.collapse->elastic = controlled.control_rate;
+          result.collapse->unstable_at_first_load =
+              these.first_load && past.peak <= options.bracket_tolerance;
           return;
         }
       }
