@@ -248,11 +248,11 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
     t.lcp_size = sys.size();
     // Solve the increment's LCP.
     IncrementLcp lcp = round_lcp(ctx, sys, s, step, warm_rows);
-    // Non-associated flow under load control: the symmetric part of the splitting that finds
-    // the active set (solve/symmetric_splitting.hpp), and the rows perturbed toward associated
-    // flow, assembled only where the solver asks for them (IncrementLcp::perturbed).
-    const bool non_associated =
-        !ctx.controlled() && sys.size() > 0 && !follows_associated_flow(sys);
+    // Non-associated flow: the symmetric part of the splitting that finds the active set
+    // (solve/symmetric_splitting.hpp), and the rows perturbed toward associated flow, assembled
+    // only where the solver asks for them (IncrementLcp::perturbed). Under displacement control
+    // the splitting's remainder holds the control term too.
+    const bool non_associated = sys.size() > 0 && !follows_associated_flow(sys);
     std::optional<YieldSystem> along_flow;
     if (non_associated && solver.tuning().splitting) {
       along_flow = assemble_yield_system(ctx.model, ctx.points, s.points, s.u, lcp_points,

@@ -117,10 +117,11 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
       fmt::print(
           "COLLAPSE in stage '{}': limit load at factor {:.6f}, the peak of the equilibrium path "
           "(past the last load carried under load control, displacement control of block {}: "
-          "the load {} while it moved {:.3g} m; the stage's whole load moves it {:.3g} m "
-          "elastically)",
+          "the load {} {:.3g} m; the stage's whole load moves it {:.3g} m elastically)",
           stage.name, c.carried, c.control_block,
-          c.fell ? "fell past the peak after staying there" : "stayed there", c.plateau, c.elastic);
+          c.fell ? "fell past the peak after it moved at the peak for"
+                 : "stayed there while it moved",
+          c.plateau, c.elastic);
     else
       fmt::print("COLLAPSE in stage '{}': carried factor {:.6f}, failed at {:.6f}", stage.name,
                  c.carried, c.failed);
