@@ -55,6 +55,17 @@ IncrementRecord record(const Model& model, const Trial& t, int stage, int increm
   return r;
 }
 
+// Displacement control of `point` of `block` along `direction`: its row of K's unknowns and its
+// rate along x_ref.
+void control_point(StageContext& ctx, int block, const Vec2& point, const Vec2& direction) {
+  ctx.control_block = block;
+  ctx.control = Eigen::VectorXd::Zero(ctx.model.n_dofs());
+  ctx.control.segment<6>(6 * static_cast<Eigen::Index>(block)) =
+      block_Q(ctx.model.blocks[static_cast<std::size_t>(block)].centroid, point).transpose() *
+      direction;
+  ctx.control_rate = ctx.control.dot(ctx.x_ref);
+}
+
 // The stage's reference load: x_ref = K^-1 P_stage, and under displacement control the monitor's
 // row of K's unknowns and its rate along x_ref.
 StageContext stage_context(const Model& model, const std::vector<YieldPoint>& points,
@@ -67,11 +78,7 @@ StageContext stage_context(const Model& model, const std::vector<YieldPoint>& po
   }
   if (stage.control) {
     const Monitor& m = model.monitors[stage.control->monitor];
-    ctx.control_block = m.block;
-    ctx.control = Eigen::VectorXd::Zero(model.n_dofs());
-    ctx.control.segment<6>(6 * m.block) =
-        block_Q(model.blocks[m.block].centroid, m.point).transpose() * stage.control->direction;
-    ctx.control_rate = ctx.control.dot(ctx.x_ref);
+    control_point(ctx, m.block, m.point, stage.control->direction);
     if (!(std::abs(ctx.control_rate) > 0.0))
       throw ModelError("stage '" + stage.name + "': the controlled monitor '" + m.name +
                            "' does not move under the stage's loads",
@@ -104,31 +111,22 @@ bool has_nonassociated_flow(const Model& model) {
   return false;
 }
 
-// A load-controlled stage left undecided: the rest of it under displacement control of the block
-// that moved most in the last increment carried (`moved`), along its motion
-// (analysis/limit_point.hpp). Undecided where the stage's load does not move that block
-// elastically along its motion.
-LimitPoint follow_past_undecided(const StageContext& ctx, const Eigen::VectorXd& moved,
-                                 const AnalysisState& from, const CarryStep& carry,
-                                 const TryStep& controlled_step, StageContext& controlled,
-                                 LimitPointOptions options) {
+// A load-controlled stage left undecided goes on under displacement control of the centroid of
+// the block that moved most in the last increment carried (`moved`), along its motion
+// (analysis/limit_point.hpp). None where no block moved, or where the stage's load does not move
+// that block elastically along its motion.
+std::optional<StageContext> controlled_past_undecided(const StageContext& ctx,
+                                                      const Eigen::VectorXd& moved) {
   const ControlPoint at = most_moved_block(ctx.model, moved);
-  LimitPoint none;
-  none.peak = from.stage_factor;
   if (at.block < 0)
-    return none;
-  controlled.control = Eigen::VectorXd::Zero(ctx.model.n_dofs());
-  controlled.control.segment<2>(6 * static_cast<Eigen::Index>(at.block)) = at.direction;
-  controlled.control_rate = controlled.control.dot(ctx.x_ref);
-  controlled.control_block = at.block;
+    return std::nullopt;
+  StageContext controlled = ctx;
+  control_point(controlled, at.block, ctx.model.blocks[static_cast<std::size_t>(at.block)].centroid,
+                at.direction);
   const double motion = ctx.x_ref.segment<2>(6 * static_cast<Eigen::Index>(at.block)).norm();
-  if (!(controlled.control_rate > 1e-6 * motion && motion > 0.0))
-    return none;
-  // A plateau as long as the stage's whole load moves the point elastically: its motion is then
-  // at least half plastic. Its steps are at most a tenth of that.
-  options.plateau = controlled.control_rate;
-  options.step = controlled.control_rate / std::max(ctx.stage.increments, 10);
-  return follow_to_limit_point(from.stage_factor, controlled_step, carry, options);
+  if (!(motion > 0.0 && controlled.control_rate > 1e-6 * motion))
+    return std::nullopt;
+  return controlled;
 }
 
 // Neither carried nor proven to fail: near a limit load the LCP is nearly singular, and with
@@ -297,6 +295,7 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
                              stage.control.has_value(), false};
     if (!stage.control)
       stepping.stage_end = 1.0;
+    const bool search_limit_point = !stage.control && plastic_tuning.limit_point_increments > 0;
     // Load control past a limit point's search whose load rose past the stage's end: the
     // increments left reach the stage's end exactly.
     bool off_grid = false;
@@ -309,36 +308,44 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
         break;
       const SteppedIncrement done =
           step_increment(this_step, result.state.stage_factor, try_step, carry, these);
-      if (done.outcome == SteppedIncrement::Outcome::undecided && !stage.control &&
-          plastic_tuning.limit_point_increments > 0) {
-        StageContext controlled = ctx;
+      const std::optional<StageContext> controlled =
+          done.outcome == SteppedIncrement::Outcome::undecided && search_limit_point
+              ? controlled_past_undecided(ctx, last ? last->du : ctx.x_ref)
+              : std::optional<StageContext>();
+      if (controlled) {
         const TryStep controlled_step = [&](double s, Thoroughness thoroughness) {
-          return solve_increment(controlled, result.state, s, options, tuning, structure.solver(),
+          return solve_increment(*controlled, result.state, s, options, tuning, structure.solver(),
                                  memory, thoroughness);
         };
-        const LimitPoint past = follow_past_undecided(
-            ctx, last ? last->du : ctx.x_ref, result.state, carry, controlled_step, controlled,
-            {.stepping = stepping, .most_increments = plastic_tuning.limit_point_increments});
+        // Steps of a tenth of the point's elastic motion under the stage's whole load (one
+        // increment's, where the stage has more), and a plateau as long as that motion: the
+        // point's motion on it is then at least half plastic.
+        const double elastic = controlled->control_rate;
+        const LimitPoint past =
+            follow_to_limit_point(result.state.stage_factor, controlled_step, carry,
+                                  {.step = elastic / std::max(stage.increments, 10),
+                                   .stepping = stepping,
+                                   .plateau = elastic,
+                                   .most_increments = plastic_tuning.limit_point_increments});
         if (past.outcome == LimitPoint::Outcome::rises) {
           off_grid = true;
           continue;
         }
         if (past.outcome == LimitPoint::Outcome::limit_point) {
           result.collapse = describe_collapse(st, past.peak, past.peak, nullptr, &*past.last);
-          result.collapse->limit_point = true;
-          result.collapse->control_block = controlled.control_block;
-          result.collapse->plateau = past.plateau;
-          result.collapse->fell = past.fell;
-          result.collapse->elastic = controlled.control_rate;
-          result.collapse->unstable_at_first_load =
-              these.first_load && past.peak <= options.bracket_tolerance;
+          Collapse& c = *result.collapse;
+          c.limit_point = true;
+          c.control_block = controlled->control_block;
+          c.plateau = past.plateau;
+          c.fell = past.fell;
+          c.elastic = elastic;
+          c.unstable_at_first_load = these.first_load && past.peak <= options.bracket_tolerance;
           return;
         }
       }
       if (done.outcome == SteppedIncrement::Outcome::undecided) {
         result.stopped =
-            undecided_stop(model, st, stage, result.state.stage_factor,
-                           !stage.control && plastic_tuning.limit_point_increments > 0);
+            undecided_stop(model, st, stage, result.state.stage_factor, search_limit_point);
         return;
       }
       if (done.outcome == SteppedIncrement::Outcome::collapse) {
