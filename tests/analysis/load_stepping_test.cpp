@@ -3,6 +3,7 @@
 // collapse factor F set by the test, and fails past it. The collapse bracket must hold F and be
 // as narrow as the tolerance asks; parts carried must add up to the increment; a step that fails
 // only numerically must never be taken for a collapse.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <vector>
@@ -219,6 +220,36 @@ TEST(LoadStepping, FailuresWithoutProofNearTheCollapseLeaveItUndecided) {
   EXPECT_EQ(out.outcome, SteppedIncrement::Outcome::undecided);
   EXPECT_LE(out.carried, kCollapse);
   EXPECT_GT(out.carried, kCollapse * (1.0 - 1e-3));  // carried what could be
+}
+
+TEST(LoadStepping, CutToTheToleranceWithoutAProofTheShortestFailingStepIsSearchedOnceMore) {
+  // Past F a step is decided only by an exhaustive search (as the complete method's proof,
+  // which a longer budget reaches): the cuts reach the tolerance undecided, and the shortest
+  // step that failed, searched so, is proven to fail. The bracket is then the tolerance's.
+  Structure s;
+  s.answer = [&s](double from, double step) {
+    if (from + step <= kCollapse)
+      return carried_to(from + step);
+    return s.asked.back() == Thoroughness::exhaustive ? collapsed() : failed();
+  };
+  s.factor = 0.5;
+  const SteppingOptions options{.bracket_tolerance = 1e-4};
+  const SteppedIncrement out = s.step(0.25, options);
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_FALSE(out.undecided_inside);
+  EXPECT_LE(out.carried, kCollapse);
+  EXPECT_GT(out.failed, kCollapse);
+  EXPECT_LE(out.failed - out.carried, options.bracket_tolerance * out.failed);
+  EXPECT_EQ(std::count(s.asked.begin(), s.asked.end(), Thoroughness::exhaustive), 1);
+  EXPECT_EQ(s.asked.back(), Thoroughness::exhaustive);
+
+  // Where that search is undecided too, so is the increment: searched exhaustively once only.
+  Structure never{.answer = [](double from, double step) {
+    return from + step <= kCollapse ? carried_to(from + step) : failed();
+  }};
+  never.factor = 0.5;
+  EXPECT_EQ(never.step(0.25, options).outcome, SteppedIncrement::Outcome::undecided);
+  EXPECT_EQ(std::count(never.asked.begin(), never.asked.end(), Thoroughness::exhaustive), 1);
 }
 
 TEST(LoadStepping, AKinkSplitsTheStepAtTheKink) {

@@ -66,6 +66,7 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   bool growing = false;          // the rest, tried again, failed: the parts grow instead
   double part_carried = 0.0;     // the last part carried after a numerical failure
   int undecided = 0;             // trials neither carried nor proven to fail, once one was
+  bool exhausted = false;        // the shortest failing step searched exhaustively
   if (t.status == Trial::Status::collapse) {
     failing_step *= t.proven_fraction;
     proven = out.carried + failing_step;
@@ -92,21 +93,32 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
     // Under displacement control the step is a displacement and no load is bracketed: the
     // failed step is cut until a part carries, or the cuts run out.
     const double upper = proven ? *proven : out.carried + failing_step;
-    if (!options.displacement_control &&
-        std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper))
+    const bool at_tolerance =
+        !options.displacement_control &&
+        std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper);
+    // Cut to the tolerance without a proof: the shortest step that failed, undecided, is
+    // searched once more, exhaustively. Its LCP is the smallest of the increment, where the
+    // complete method's proof is within reach of a longer search.
+    if (at_tolerance && (proven || exhausted || !(failing_step > 0.0)))
       break;
+    if (at_tolerance)
+      exhausted = true;
     // After a numerical failure and a part carried, the rest is tried again whole; where that
     // fails too, the next parts grow from the last one instead (near a limit load the steps
     // that carry are small, and trying the whole rest before each costs a bisection or more).
     const bool retrying = retry;
-    const double trial = !retry    ? (aim ? kAimAtBound : 0.5) * failing_step
-                         : growing ? std::min(remaining, kGrowth * part_carried)
-                                   : remaining;
+    const double trial = at_tolerance ? failing_step
+                         : !retry     ? (aim ? kAimAtBound : 0.5) * failing_step
+                         : growing    ? std::min(remaining, kGrowth * part_carried)
+                                      : remaining;
     retry = false;
     // Inside a proven bracket a trial that stays undecided moves neither end: the pivoting
     // methods' search on a large LCP (seconds, where the active-set method takes milliseconds)
     // is left out there.
-    const Trial part = try_step(trial, proven ? Thoroughness::quick : Thoroughness::thorough);
+    const Thoroughness thoroughness = at_tolerance ? Thoroughness::exhaustive
+                                      : proven     ? Thoroughness::quick
+                                                   : Thoroughness::thorough;
+    const Trial part = try_step(trial, thoroughness);
     if (part.status == Trial::Status::carried) {
       keep(part);
       remaining = trial == remaining ? 0.0 : remaining - trial;

@@ -278,7 +278,10 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
           ActiveSetOptions{.max_iterations = kProposalSteps, .murty_after_cycle = false}),
       after_newton_(ActiveSetOptions{.max_iterations = kAfterNewtonSteps,
                                      .interrupt_after = tuning.interrupt_after}),
-      dense_first_(kDenseFirstFailures, tuning.dense_first_period) {}
+      dense_first_(kDenseFirstFailures, tuning.dense_first_period),
+      exhaustive_(BranchAndBoundOptions{
+          .max_nodes = static_cast<int>(kExhaustiveSearch * BranchAndBoundOptions{}.max_nodes),
+          .max_work = kExhaustiveSearch * BranchAndBoundOptions{}.max_work}) {}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
                                          bool stop_unsolved, Thoroughness thoroughness,
@@ -311,6 +314,8 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     return out;
   };
   LcpResult r;
+  const bool thorough =
+      thoroughness == Thoroughness::thorough || thoroughness == Thoroughness::exhaustive;
   const bool active_set = tuning_.active_set && routes != Routes::pivoting;
   const double expected_active = lcp.warm.sum();
   out.on_tangent = active_set && tuning_.reduced_tangent_rows >= 0 && !lcp.control &&
@@ -384,7 +389,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
           return finish(Outcome::solved, r);
         // Where no proposal solved it, the block rule seldom converges on a non-symmetric LCP
         // this large, and each of its steps costs a factorization: a quick solve ends here.
-        if (thoroughness != Thoroughness::thorough)
+        if (!thorough)
           return finish(Outcome::undecided, r);
         if (splitting.proposals > 0) {
           proposed = (splitting.z.array() > 0.0).cast<double>();
@@ -400,8 +405,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
                                               r.status == LcpStatus::numerical_failure);
     if (r.status == LcpStatus::interrupted || (stop_unsolved && unsolved))
       return finish(Outcome::interrupted, r);
-    const int dense_rows = thoroughness == Thoroughness::thorough ? tuning_.dense_fallback_rows
-                                                                  : tuning_.reduced_tangent_rows;
+    const int dense_rows = thorough ? tuning_.dense_fallback_rows : tuning_.reduced_tangent_rows;
     if (!decided(r) && m > dense_rows)
       return finish(Outcome::undecided, r);  // too large for the dense routes
   }
@@ -427,7 +431,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
             .solved)
       return finish(Outcome::solved, r);
   }
-  if (!decided(r) && thoroughness != Thoroughness::thorough && m > tuning_.reduced_tangent_rows)
+  if (!decided(r) && !thorough && m > tuning_.reduced_tangent_rows)
     return finish(Outcome::undecided, r);  // no pivoting on a large LCP
   if (!decided(r) && routes == Routes::up_to_pivoting) {
     out.pivoting_left = true;  // the caller's proof first
@@ -460,8 +464,9 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
       if (std::optional<LcpResult> near = from_perturbed(lcp, dense, out))
         r = std::move(*near);
     }
-    if (!decided(r) && !(undecided_ && same_up_to_scale(*undecided_, dense))) {
-      r = complete_.solve(dense);
+    const bool exhaustive = thoroughness == Thoroughness::exhaustive;
+    if (!decided(r) && (exhaustive || !(undecided_ && same_up_to_scale(*undecided_, dense)))) {
+      r = exhaustive ? exhaustive_.solve(dense) : complete_.solve(dense);
       if (!decided(r))
         undecided_ = dense;
     }
