@@ -250,6 +250,18 @@ TEST(LoadStepping, CutToTheToleranceWithoutAProofTheShortestFailingStepIsSearche
   never.factor = 0.5;
   EXPECT_EQ(never.step(0.25, options).outcome, SteppedIncrement::Outcome::undecided);
   EXPECT_EQ(std::count(never.asked.begin(), never.asked.end(), Thoroughness::exhaustive), 1);
+
+  // Nor is an LCP too large for that search to reach a proof searched so.
+  Structure large{.answer = [](double from, double step) {
+    if (from + step <= kCollapse)
+      return carried_to(from + step);
+    Trial t = failed();
+    t.lcp_size = kExhaustiveRows + 1;
+    return t;
+  }};
+  large.factor = 0.5;
+  EXPECT_EQ(large.step(0.25, options).outcome, SteppedIncrement::Outcome::undecided);
+  EXPECT_EQ(std::count(large.asked.begin(), large.asked.end(), Thoroughness::exhaustive), 0);
 }
 
 TEST(LoadStepping, AKinkSplitsTheStepAtTheKink) {

@@ -58,15 +58,16 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   }
   // Bisect the failed step. The bracket's upper end is the nearest load proven to fail (a
   // certificate proves every step from a fraction of the failed one on).
-  double remaining = rest;       // of this increment, in the units of `step`
-  double failing_step = rest;    // from the state: proven to fail, or the last that failed
-  std::optional<double> proven;  // stage factor of the nearest proof
-  bool aim = false;              // aim at the certificate's bound
-  bool retry = false;            // a numerical failure, then a carried part: try on
-  bool growing = false;          // the rest, tried again, failed: the parts grow instead
-  double part_carried = 0.0;     // the last part carried after a numerical failure
-  int undecided = 0;             // trials neither carried nor proven to fail, once one was
-  bool exhausted = false;        // the shortest failing step searched exhaustively
+  double remaining = rest;        // of this increment, in the units of `step`
+  double failing_step = rest;     // from the state: proven to fail, or the last that failed
+  std::optional<double> proven;   // stage factor of the nearest proof
+  bool aim = false;               // aim at the certificate's bound
+  bool retry = false;             // a numerical failure, then a carried part: try on
+  bool growing = false;           // the rest, tried again, failed: the parts grow instead
+  double part_carried = 0.0;      // the last part carried after a numerical failure
+  int undecided = 0;              // trials neither carried nor proven to fail, once one was
+  bool exhausted = false;         // the shortest failing step searched exhaustively
+  int failing_rows = t.lcp_size;  // the LCP of the last step that failed undecided
   if (t.status == Trial::Status::collapse) {
     failing_step *= t.proven_fraction;
     proven = out.carried + failing_step;
@@ -97,9 +98,10 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
         !options.displacement_control &&
         std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper);
     // Cut to the tolerance without a proof: the shortest step that failed, undecided, is
-    // searched once more, exhaustively. Its LCP is the smallest of the increment, where the
-    // complete method's proof is within reach of a longer search.
-    if (at_tolerance && (proven || exhausted || !(failing_step > 0.0)))
+    // searched once more, exhaustively, where its LCP is small enough for that search to reach
+    // a proof (kExhaustiveRows).
+    if (at_tolerance &&
+        (proven || exhausted || !(failing_step > 0.0) || failing_rows > kExhaustiveRows))
       break;
     if (at_tolerance)
       exhausted = true;
@@ -138,6 +140,7 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
     } else {
       ++cuts;
       failing_step = trial;
+      failing_rows = part.lcp_size;
       aim = false;
       growing = growing || retrying;
       // Between a load carried and one proven to fail, each undecided trial costs a whole
