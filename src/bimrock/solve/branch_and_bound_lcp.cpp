@@ -35,7 +35,8 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
   const double per_node = per_pivot * static_cast<double>(n) / 3.0;
   LcpPolyhedron polyhedron(problem);
   std::vector<std::vector<Fix>> stack{std::vector<Fix>(static_cast<std::size_t>(n), Fix::none)};
-  bool complete = true;  // every node so far decided (none failed)
+  bool complete = true;                        // every node so far decided (none failed)
+  std::vector<std::vector<Fix>> empty_leaves;  // nodes below the root the simplex found empty
   int nodes = 0;
   Eigen::VectorXd last = Eigen::VectorXd::Zero(n);
   const auto work = [&] {
@@ -55,8 +56,10 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
       continue;
     }
     if (v.status == LcpPolyhedron::Status::empty) {
-      if (nodes > 1)
+      if (nodes > 1) {
+        empty_leaves.push_back(fix);
         continue;
+      }
       // The root: no z >= 0 makes w >= 0. Farkas' lemma gives the proof.
       LcpResult r = make_lcp_result(problem, LcpStatus::no_solution, last, nodes);
       const std::optional<Eigen::VectorXd> cert = polyhedron.certificate();
@@ -98,6 +101,12 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
     stack.push_back(z_first ? std::move(keep_w) : std::move(keep_z));
     stack.push_back(z_first ? std::move(keep_z) : std::move(keep_w));
   }
+  // A proof needs every leaf proven empty: the simplex's verdict is checked by a certificate
+  // of the leaf's own (its round-off can call a feasible node of a degenerate LCP empty).
+  if (complete)
+    complete =
+        std::all_of(empty_leaves.begin(), empty_leaves.end(),
+                    [&](const std::vector<Fix>& leaf) { return polyhedron.certified_empty(leaf); });
   const LcpStatus status = complete                     ? LcpStatus::no_solution
                            : work() > options_.max_work ? LcpStatus::iteration_limit
                                                         : LcpStatus::numerical_failure;

@@ -9,8 +9,10 @@
 /// least_norm_pivoting(), and checked on the whole problem); otherwise the pair with the largest
 /// min(z_i, w_i) (each relative to its own scale) is branched: w_i = 0 (the row active) first where
 /// z_i is the larger, else z_i = 0 first. Every solution lies below one leaf, so a search in which
-/// every node ends empty proves that the LCP has no solution; an empty root gives, by Farkas'
-/// lemma, a certificate r >= 0 with M^T r <= 0 and q . r < 0.
+/// every node ends empty proves that the LCP has no solution, once each empty leaf is certified
+/// so by a Farkas certificate of its own (LcpPolyhedron::certified_empty: the simplex alone can
+/// call a feasible node empty); an empty root gives, by Farkas' lemma, a certificate r >= 0 with
+/// M^T r <= 0 and q . r < 0.
 ///
 /// Lemke's method decides an LCP only for copositive-plus M: for non-associated flow
 /// (M = N - C K^-1 Phi not symmetric) its secondary ray proves nothing, and on the degenerate
@@ -45,9 +47,10 @@ class BranchAndBoundLcp final : public LcpSolver {
   explicit BranchAndBoundLcp(BranchAndBoundOptions options = {}) : options_(std::move(options)) {}
   [[nodiscard]] std::string name() const override { return "branch-and-bound"; }
   /// solved; no_solution when the search proves there is none (with the Farkas certificate as
-  /// the ray where the root LP is empty, without a ray where every leaf is); iteration_limit
-  /// past max_nodes, max_work or max_size; numerical_failure where an LP failed and left the search
-  /// incomplete. `steps` counts the nodes. The warm start is ignored.
+  /// the ray where the root LP is empty, without a ray where every leaf is, each certified);
+  /// iteration_limit past max_nodes, max_work or max_size; numerical_failure where an LP failed,
+  /// or a leaf found empty has no certificate, and left the search incomplete. `steps` counts the
+  /// nodes. The warm start is ignored.
   [[nodiscard]] LcpResult solve(const LcpProblem& problem,
                                 const Eigen::VectorXd* warm_start = nullptr) override;
 

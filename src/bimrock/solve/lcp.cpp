@@ -47,12 +47,30 @@ constexpr double floor_fraction = 1e-10;
 bool certifies_infeasibility(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
                              const Eigen::VectorXd& mtr, const Eigen::VectorXd& mtr_size,
                              double m_max) {
-  if (r.size() == 0 || r.size() != q.size())
+  const std::vector<char> none(static_cast<std::size_t>(r.size()), 0);
+  return certifies_empty(q, r, mtr, mtr_size, m_max, none, none, 0.0);
+}
+
+bool certifies_empty(const Eigen::VectorXd& q, const Eigen::VectorXd& r, const Eigen::VectorXd& mtr,
+                     const Eigen::VectorXd& mtr_size, double m_max, const std::vector<char>& held_w,
+                     const std::vector<char>& held_z, double held_slack) {
+  const auto n = static_cast<std::size_t>(r.size());
+  if (n == 0 || r.size() != q.size() || mtr.size() != r.size() || mtr_size.size() != r.size() ||
+      held_w.size() != n || held_z.size() != n)
     return false;
   const double floor = floor_fraction * m_max * r.cwiseAbs().sum();
-  return (r.array() >= -tol * r.cwiseAbs().maxCoeff()).all() &&
-         (mtr.array() <= tol * mtr_size.array() + floor).all() &&
-         q.dot(r) < -tol * q.cwiseAbs().dot(r.cwiseAbs());
+  const double sign_tol = tol * r.cwiseAbs().maxCoeff();
+  double slack = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    if (held_w[i])
+      slack += held_slack * std::abs(r(k));
+    else if (r(k) < -sign_tol)
+      return false;
+    if (!held_z[i] && !(mtr(k) <= tol * mtr_size(k) + floor))
+      return false;
+  }
+  return q.dot(r) + slack < -tol * q.cwiseAbs().dot(r.cwiseAbs());
 }
 
 double certified_from(const Eigen::VectorXd& q, const Eigen::VectorXd& dq,

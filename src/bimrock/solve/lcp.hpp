@@ -6,6 +6,8 @@
 #include <iosfwd>
 #include <string>
 
+#include <vector>
+
 #include <Eigen/Core>
 
 namespace bimrock {
@@ -90,6 +92,16 @@ struct LcpResult {
 [[nodiscard]] bool certifies_infeasibility(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
                                            const Eigen::VectorXd& mtr,
                                            const Eigen::VectorXd& mtr_size, double m_max);
+
+/// The same proof for a part of the polyhedron {z >= 0, w = M z + q >= 0} in which some w_i are
+/// held in [0, held_slack] (`held_w`) and some z_j at zero (`held_z`): r_i may take either sign
+/// on a held w_i, (M^T r)_j is not bounded on a held z_j, and q . r must stay below
+/// -held_slack sum over the held w_i of |r_i| too (then r . w >= that sum, and r . w =
+/// (M^T r) . z + q . r < it). With nothing held it is certifies_infeasibility().
+[[nodiscard]] bool certifies_empty(const Eigen::VectorXd& q, const Eigen::VectorXd& r,
+                                   const Eigen::VectorXd& mtr, const Eigen::VectorXd& mtr_size,
+                                   double m_max, const std::vector<char>& held_w,
+                                   const std::vector<char>& held_z, double held_slack);
 
 /// A certificate r of LCP(M, q) certifies LCP(M, q - t dq) too, M^T r being the same, as long
 /// as q . r stays below certifies_infeasibility's tolerance. For a q that moves with the load,

@@ -15,6 +15,9 @@ using Index = Eigen::Index;
 /// How far a w_i held at zero may stray from it, in the scaled units (max|M| = max|q| = 1).
 constexpr double kHeldSlack = 1e-9;
 
+/// Certificates of empty nodes kept to try on the next ones (certified_empty()).
+constexpr std::size_t kKeptCertificates = 16;
+
 /// Simplex settings: quiet, no presolve (it would discard the basis a child node starts from).
 glp_smcp simplex_settings() {
   glp_smcp parm;
@@ -176,37 +179,86 @@ long LcpPolyhedron::pivots() const {
   return glp_get_it_cnt(lp_->prob.p);
 }
 
-std::optional<Eigen::VectorXd> LcpPolyhedron::certificate() const {
+std::optional<Eigen::VectorXd> LcpPolyhedron::farkas(const std::vector<Fix>& fix) const {
   const Index n = problem_.size();
-  if (n == 0)
-    return std::nullopt;
-  // r >= 0 with (M^T r)_j <= 0 for every j and q . r = -1; the least sum of r.
+  // Columns: y_i >= 0 for every row, and y_i^- >= 0 for the rows held at w_i = 0 (there y_i is
+  // y_i - y_i^-); rows: (M^T y)_j <= 0 where z_j is not held at zero, and q . y = -1; the least
+  // sum of |y|.
+  std::vector<Index> held;
+  for (Index i = 0; i < n; ++i)
+    if (fix[static_cast<std::size_t>(i)] == Fix::w)
+      held.push_back(i);
+  const Index cols = n + static_cast<Index>(held.size());
+  Eigen::MatrixXd a(n + 1, cols);
+  a.topLeftCorner(n, n) = lp_->m.transpose();
+  a.block(n, 0, 1, n) = lp_->q.transpose();
+  for (std::size_t k = 0; k < held.size(); ++k)
+    a.col(n + static_cast<Index>(k)) = -a.col(held[k]);
   const QuietGlpk quiet;
   GlpProb lp;
   glp_prob* p = lp.p;
   glp_set_obj_dir(p, GLP_MIN);
   glp_add_rows(p, static_cast<int>(n + 1));
-  glp_add_cols(p, static_cast<int>(n));
-  Eigen::MatrixXd a(n + 1, n);
-  a.topRows(n) = lp_->m.transpose();
-  a.row(n) = lp_->q.transpose();
+  glp_add_cols(p, static_cast<int>(cols));
   load_dense(p, a);
-  for (Index j = 0; j < n; ++j) {
-    glp_set_row_bnds(p, static_cast<int>(j + 1), GLP_UP, 0.0, 0.0);
+  for (Index j = 0; j < n; ++j)
+    glp_set_row_bnds(p, static_cast<int>(j + 1),
+                     fix[static_cast<std::size_t>(j)] == Fix::z ? GLP_FR : GLP_UP, 0.0, 0.0);
+  glp_set_row_bnds(p, static_cast<int>(n + 1), GLP_FX, -1.0, -1.0);
+  for (Index j = 0; j < cols; ++j) {
     glp_set_col_bnds(p, static_cast<int>(j + 1), GLP_LO, 0.0, 0.0);
     glp_set_obj_coef(p, static_cast<int>(j + 1), 1.0);
   }
-  glp_set_row_bnds(p, static_cast<int>(n + 1), GLP_FX, -1.0, -1.0);
   glp_adv_basis(p, 0);
   if (!simplex(p, n, std::numeric_limits<long>::max()) || glp_get_status(p) != GLP_OPT)
     return std::nullopt;
-  Eigen::VectorXd r(n);
+  Eigen::VectorXd y(n);
   for (Index j = 0; j < n; ++j)
-    r(j) = std::max(0.0, glp_get_col_prim(p, static_cast<int>(j + 1)));
-  const double top = r.maxCoeff();
+    y(j) = std::max(0.0, glp_get_col_prim(p, static_cast<int>(j + 1)));
+  for (std::size_t k = 0; k < held.size(); ++k)
+    y(held[k]) -= std::max(0.0, glp_get_col_prim(p, static_cast<int>(n + 1 + k)));
+  return y;
+}
+
+std::optional<Eigen::VectorXd> LcpPolyhedron::certificate() const {
+  const Index n = problem_.size();
+  if (n == 0)
+    return std::nullopt;
+  std::optional<Eigen::VectorXd> r = farkas(std::vector<Fix>(static_cast<std::size_t>(n)));
+  const double top = r ? r->maxCoeff() : 0.0;
   if (!(top > 0.0))
     return std::nullopt;
-  return Eigen::VectorXd(r / top);
+  return Eigen::VectorXd(*r / top);
+}
+
+bool LcpPolyhedron::certified_empty(const std::vector<Fix>& fix) {
+  const Index n = problem_.size();
+  if (static_cast<Index>(fix.size()) != n || n == 0)
+    return false;
+  std::vector<char> held_w(fix.size(), 0);
+  std::vector<char> held_z(fix.size(), 0);
+  for (std::size_t i = 0; i < fix.size(); ++i) {
+    held_w[i] = fix[i] == Fix::w;
+    held_z[i] = fix[i] == Fix::z;
+  }
+  // The check, in double precision on the scaled data (max|M| = 1).
+  const auto certifies = [&](const Eigen::VectorXd& y) {
+    return certifies_empty(lp_->q, y, lp_->m.transpose() * y,
+                           lp_->m.cwiseAbs().transpose() * y.cwiseAbs(), 1.0, held_w, held_z,
+                           kHeldSlack);
+  };
+  // Siblings and cousins are often empty for the same reason: a recent certificate is checked
+  // (n^2) before an LP is solved (many pivots of n^2 each).
+  for (auto c = certificates_.rbegin(); c != certificates_.rend(); ++c)
+    if (certifies(*c))
+      return true;
+  std::optional<Eigen::VectorXd> y = farkas(fix);
+  if (!y || !certifies(*y))
+    return false;
+  if (certificates_.size() == kKeptCertificates)
+    certificates_.erase(certificates_.begin());
+  certificates_.push_back(std::move(*y));
+  return true;
 }
 
 }  // namespace bimrock

@@ -52,12 +52,25 @@ class LcpPolyhedron {
   /// certifies_infeasibility).
   [[nodiscard]] std::optional<Eigen::VectorXd> certificate() const;
 
+  /// Whether the node with the rows held as `fix` says is empty, checked by a Farkas certificate:
+  /// one found for an earlier node where it serves, else one found by an LP of its own: y with y_i
+  /// >= 0 where w_i >= 0 (y_i of any sign where w_i is held at zero), (M^T y)_j <= 0 where z_j >= 0
+  /// (no condition where z_j is held at zero), and q . y < 0; then y . w = (M^T y) . z + q . y < 0
+  /// for every z of the node, where y . w >= 0. The simplex's verdict "empty" alone is no proof: on
+  /// the degenerate LCPs of cohesionless joints round-off can make it call a feasible node empty.
+  [[nodiscard]] bool certified_empty(const std::vector<Fix>& fix);
+
  private:
+  /// The least-|y|_1 y of the Farkas system of the node `fix` (see certified_empty()), with
+  /// q . y = -1 in the scaled units, as the LP found it, unchecked; none where the LP has none.
+  [[nodiscard]] std::optional<Eigen::VectorXd> farkas(const std::vector<Fix>& fix) const;
+
   struct Lp;
   const LcpProblem& problem_;
   double m_max_ = 1.0;
   double q_max_ = 1.0;
   std::unique_ptr<Lp> lp_;
+  std::vector<Eigen::VectorXd> certificates_;  ///< of the nodes certified so far, newest last
 };
 
 }  // namespace bimrock
