@@ -52,6 +52,24 @@ def joint_sets(rng, count, spacing_range, trace_range):
     return "\n".join(sets)
 
 
+def preamble(title, plane, materials, joint):
+    """The lines every case file starts with: its title, the units, the block materials (one
+    per line) and the joint material."""
+    lines = "\n".join(f"  {m}: {{E: {e}, nu: {nu}, unit_weight: {w}}}" for m, e, nu, w in materials)
+    return f"""schema: 1
+title: "{title}"
+# Units: SI (m, N, Pa, Pa/m, N/m^3).
+analysis: {{plane: {plane}, thickness: 1.0}}
+materials:
+{lines}
+joint_materials:
+  {joint}
+"""
+
+
+ROCK = ("20.0e9", "0.25", "26.0e3")
+
+
 def slope(rng):
     height = rng.uniform(10.0, 40.0)
     face = math.radians(rng.uniform(45.0, 75.0))
@@ -61,15 +79,10 @@ def slope(rng):
     right = crest + 1.5 * height
     top = base + height
     sets = joint_sets(rng, rng.choice((1, 2)), (height / 6, height / 3), (height / 2, height))
-    return f"""schema: 1
-title: "Random slope: factor of safety of a jointed rock slope"
-# Units: SI (m, N, Pa, Pa/m, N/m^3).
-analysis: {{plane: strain, thickness: 1.0}}
-materials:
-  rock: {{E: 20.0e9, nu: 0.25, unit_weight: 26.0e3}}
-joint_materials:
-  joint: {{kn: 10.0e9, ks: 4.0e9, {joint_strength(rng, 30e3)}}}
-domain:
+    head = preamble("Random slope: factor of safety of a jointed rock slope", "strain",
+                    [("rock", *ROCK)],
+                    f"joint: {{kn: 10.0e9, ks: 4.0e9, {joint_strength(rng, 30e3)}}}")
+    return head + f"""domain:
   outline: [[0, 0], [{right:.4f}, 0], [{right:.4f}, {top:.4f}], [{crest:.4f}, {top:.4f}],
             [{toe:.4f}, {base:.4f}], [0, {base:.4f}]]
   material: rock
@@ -122,18 +135,11 @@ def tunnel(rng):
     excavate: {{material: bench}}"""
         zones = (f"    - {{material: heading, outline: {polygon(upper)}}}\n"
                  f"    - {{material: bench, outline: {polygon(lower)}}}")
-    return f"""schema: 1
-title: "Random tunnel: a circular opening excavated in jointed rock under in-situ stress"
-# Units: SI (m, N, Pa, Pa/m, N/m^3).
-analysis: {{plane: strain, thickness: 1.0}}
-materials:
-  rock: {{E: 20.0e9, nu: 0.25, unit_weight: 26.0e3}}
-  opening: {{E: 20.0e9, nu: 0.25, unit_weight: 26.0e3}}
-  heading: {{E: 20.0e9, nu: 0.25, unit_weight: 26.0e3}}
-  bench: {{E: 20.0e9, nu: 0.25, unit_weight: 26.0e3}}
-joint_materials:
-  joint: {{kn: 20.0e9, ks: 8.0e9, {joint_strength(rng, 100e3)}}}
-domain:
+    head = preamble("Random tunnel: a circular opening excavated in jointed rock under in-situ"
+                    " stress", "strain",
+                    [(m, *ROCK) for m in ("rock", "opening", "heading", "bench")],
+                    f"joint: {{kn: 20.0e9, ks: 8.0e9, {joint_strength(rng, 100e3)}}}")
+    return head + f"""domain:
   outline: [[{-half}, {-half}], [{half}, {-half}], [{half}, {half}], [{-half}, {half}]]
   material: rock
   zones:
@@ -168,23 +174,20 @@ def arch(rng):
     weights = []
     for i in range(count):
         a, b = math.pi * i / count, math.pi * (i + 1) / count
-        quad = [(inner * math.cos(b), inner * math.sin(b)), (inner * math.cos(a), inner * math.sin(a)),
-                (outer * math.cos(a), outer * math.sin(a)), (outer * math.cos(b), outer * math.sin(b))]
+        quad = [(inner * math.cos(b), inner * math.sin(b)),
+                (inner * math.cos(a), inner * math.sin(a)),
+                (outer * math.cos(a), outer * math.sin(a)),
+                (outer * math.cos(b), outer * math.sin(b))]
         # Counter-clockwise: inner edge from b to a, outer edge from a to b.
         blocks.append(f"  - {{material: stone, vertices: {polygon(quad)}}}")
         centroids.append((sum(p[0] for p in quad) / 4, sum(p[1] for p in quad) / 4))
         weights.append(22.0e3 * 0.5 * (b - a) * (outer ** 2 - inner ** 2))
     loaded = rng.randrange(count)
     force = rng.uniform(0.05, 1.0) * sum(weights)
-    return f"""schema: 1
-title: "Random arch: semicircular voussoirs under their weight and a point load"
-# Units: SI (m, N, Pa, Pa/m, N/m^3).
-analysis: {{plane: stress, thickness: 1.0}}
-materials:
-  stone: {{E: 10.0e9, nu: 0.2, unit_weight: 22.0e3}}
-joint_materials:
-  mortarless: {{kn: 5.0e10, ks: 2.0e10, {joint_strength(rng, 0.0)}}}
-joints:
+    head = preamble("Random arch: semicircular voussoirs under their weight and a point load",
+                    "stress", [("stone", "10.0e9", "0.2", "22.0e3")],
+                    f"mortarless: {{kn: 5.0e10, ks: 2.0e10, {joint_strength(rng, 0.0)}}}")
+    return head + f"""joints:
   default: mortarless
 blocks:
 {chr(10).join(blocks)}
@@ -213,16 +216,10 @@ def footing(rng):
     pressure = rng.uniform(2.0, 30.0) * 1e6
     x1, x2 = (width - strip) / 2, (width + strip) / 2
     pad = [(x1, depth - 0.5), (x2, depth - 0.5), (x2, depth + 1.0), (x1, depth + 1.0)]
-    return f"""schema: 1
-title: "Random footing: a strip load on a jointed rock mass"
-# Units: SI (m, N, Pa, Pa/m, N/m^3).
-analysis: {{plane: strain, thickness: 1.0}}
-materials:
-  rock: {{E: 20.0e9, nu: 0.25, unit_weight: 26.0e3}}
-  pad: {{E: 20.0e9, nu: 0.25, unit_weight: 26.0e3}}
-joint_materials:
-  joint: {{kn: 10.0e9, ks: 4.0e9, {joint_strength(rng, 200e3)}}}
-domain:
+    head = preamble("Random footing: a strip load on a jointed rock mass", "strain",
+                    [("rock", *ROCK), ("pad", *ROCK)],
+                    f"joint: {{kn: 10.0e9, ks: 4.0e9, {joint_strength(rng, 200e3)}}}")
+    return head + f"""domain:
   outline: [[0, 0], [{width:.4f}, 0], [{width:.4f}, {depth:.4f}], [0, {depth:.4f}]]
   material: rock
   zones:  # cuts the top at the strip's ends
