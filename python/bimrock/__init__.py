@@ -187,7 +187,9 @@ class Result:
     def collapse(self):
         """None, or the stage that could not be carried: stage, stage_name, carried_factor and
         failed_factor (the bracket of the collapse load factor), unstable_at_first_load,
-        undecided_inside (the bracket is wider than its tolerance), limit_point (the peak of the
+        undecided_inside (the bracket is wider than its tolerance), associated_bound (load
+        control stopped undecided at carried_factor, and failed_factor is where associated flow
+        is proven to fail, a bound for any flow rule), limit_point (the peak of the
         equilibrium path, followed under displacement control: carried_factor = failed_factor),
         limit_point_plateau_m and limit_point_elastic_m (how far the controlled block moved at
         that peak, and under the stage's whole load elastically), limit_point_fell (the load

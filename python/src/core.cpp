@@ -435,6 +435,7 @@ py::object collapse_of(const Result& r) {
   out["failed_factor"] = c.failed;
   out["unstable_at_first_load"] = c.unstable_at_first_load;
   out["undecided_inside"] = c.undecided_inside;
+  out["associated_bound"] = c.associated_bound;
   out["limit_point"] = c.limit_point;
   out["limit_point_plateau_m"] = c.plateau;
   out["limit_point_elastic_m"] = c.elastic;

@@ -30,6 +30,11 @@ struct Collapse {
   /// fail; analysis/load_stepping.hpp): the bracket is wider than the tolerance. Non-associated
   /// flow proven by associated flow's certificate ends so, between its two limit loads.
   bool undecided_inside = false;
+  /// Load control stopped undecided at `carried`, and `failed` is the collapse load of the same
+  /// case with associated flow (each dilation equal to its friction), an upper bound of this
+  /// one's by the static theorem (analysis/strength_reduction.hpp, with_associated_flow); the
+  /// mechanism is associated flow's. undecided_inside is set too.
+  bool associated_bound = false;
   /// The limit point of the equilibrium path: load control left a load undecided, and under
   /// displacement control the load factor levelled off or fell (analysis/limit_point.hpp).
   /// carried = failed = its largest value; the mechanism is the flow of the last increment.

@@ -17,6 +17,7 @@
 #include <bimrock/analysis/limit_point.hpp>
 #include <bimrock/analysis/load_stepping.hpp>
 #include <bimrock/analysis/stage_structure.hpp>
+#include <bimrock/analysis/strength_reduction.hpp>
 #include <bimrock/analysis/support_check.hpp>
 #include <bimrock/assembly/global_system.hpp>
 #include <bimrock/assembly/initial_forces.hpp>
@@ -389,6 +390,59 @@ FactorOfSafety factor_below_one(const Model& model, int fos_stage, StageStructur
   return f;
 }
 
+// A stop under load control in a model whose flow is not associated and whose strengths do not
+// soften: the same stages, up to the one that stopped, with associated flow. Where they collapse
+// in that stage (a proof, not a limit point), their collapse load bounds this model's from
+// above (strength_reduction.hpp, with_associated_flow), and the stop becomes a collapse
+// bracketed by the load carried and that bound. Otherwise the stop stands, and its reason says
+// what associated flow did.
+void bound_by_associated_flow(const Model& model, const YieldPointIndex& index,
+                              const PlasticOptions& options, const PlasticTuning& tuning,
+                              PlasticResult& result) {
+  const Stop stop = *result.stopped;
+  if (model.stages[static_cast<std::size_t>(stop.stage)].control ||
+      !has_nonassociated_flow(model) || has_softening(model))
+    return;
+  Model associated = with_associated_flow(model);
+  associated.stages.resize(static_cast<std::size_t>(stop.stage) + 1);
+  PlasticResult trial;
+  trial.points = result.points;
+  {
+    ScopedTimer t(result.timings, "(associated flow's bound)");
+    // A solver of its own: what the stopped run's solver remembers (LCPs left undecided, the
+    // routes that failed) is of the other flow rule.
+    StageStructure structure(associated, tuning.solver, tuning.stiffness, trial.timings);
+    IncrementMemory memory;
+    run_stages(associated, structure, index, options, tuning, memory, {}, trial);
+  }
+  for (const auto& [phase, seconds] : trial.timings.phases)
+    result.timings.add(phase, seconds);
+  const std::optional<Collapse>& bound = trial.collapse;
+  // By the static theorem the original model cannot carry more than associated flow: a bound
+  // below the load carried (beyond the bracket tolerance) would be round-off's, and is not used.
+  const bool bounds = bound && bound->stage == stop.stage && !bound->limit_point &&
+                      bound->failed >= stop.factor * (1.0 - options.bracket_tolerance);
+  if (!bounds) {
+    result.stopped->reason += bound && bound->stage == stop.stage && !bound->limit_point
+                                  ? "; associated flow collapses below the load carried here, "
+                                    "which no flow rule allows: round-off"
+                              : trial.stopped && trial.stopped->stage == stop.stage
+                                  ? "; associated flow stops undecided in this stage too"
+                              : !bound || bound->stage > stop.stage
+                                  ? "; associated flow carries this stage, so bounds nothing"
+                                  : "; associated flow collapses in an earlier stage";
+    return;
+  }
+  Collapse c = *bound;
+  c.carried = stop.factor;
+  c.failed = std::max(bound->failed, stop.factor);
+  c.undecided_inside = c.failed - c.carried > options.bracket_tolerance * c.failed;
+  c.associated_bound = true;
+  c.unstable_at_first_load = bound->unstable_at_first_load && stop.factor == 0.0;
+  result.collapse = std::move(c);
+  result.stopped.reset();
+}
+
 }  // namespace
 
 PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& options,
@@ -412,6 +466,8 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   IncrementMemory memory;
   if (!options.factor_of_safety) {
     run_stages(model, structure, index, options, tuning, memory, on_increment, result);
+    if (result.stopped)
+      bound_by_associated_flow(model, index, options, tuning, result);
     return with_statistics(std::move(result), structure, memory);
   }
   // The factor of safety after its stage (by default the last), from the state reached there;
@@ -429,6 +485,8 @@ PlasticResult run_plastic_analysis(const Model& model, const PlasticOptions& opt
   };
   run_stages(model, structure, index, options, tuning, memory, on_increment, result,
              factor_of_safety_after);
+  if (result.stopped)
+    bound_by_associated_flow(model, index, options, tuning, result);
   if (result.collapse && result.collapse->stage <= fos_stage) {
     ScopedTimer t(result.timings, "(factor of safety)");
     result.factor_of_safety = factor_below_one(model, fos_stage, structure, index, options, tuning,

@@ -54,4 +54,24 @@ Model reduce_strength(const Model& model, const StrengthSelection& selection, do
   return reduced;
 }
 
+Model with_associated_flow(const Model& model) {
+  Model associated = model;
+  for (JointMaterial& m : associated.joint_materials)
+    if (m.strength)
+      m.strength->dilation = m.strength->friction.peak;
+  for (BlockMaterial& m : associated.block_materials)
+    if (m.strength)
+      m.strength->dilation = m.strength->friction;
+  return associated;
+}
+
+bool has_softening(const Model& model) {
+  const auto softens = [](const Softening& law) { return law.residual < law.peak; };
+  return std::any_of(
+      model.joint_materials.begin(), model.joint_materials.end(), [&](const JointMaterial& m) {
+        return m.strength && (softens(m.strength->cohesion) || softens(m.strength->friction) ||
+                              softens(m.strength->tensile));
+      });
+}
+
 }  // namespace bimrock

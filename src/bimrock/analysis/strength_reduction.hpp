@@ -23,4 +23,14 @@ StrengthSelection all_strengths(const Model& model);
 /// angle, where it becomes that angle (a flow rule never more dilatant than associated flow).
 Model reduce_strength(const Model& model, const StrengthSelection& selection, double factor);
 
+/// The model with associated flow: each dilation angle (of joints and blocks) set to its
+/// friction angle, every strength kept. By the static theorem of limit analysis, whatever the
+/// flow rule, a state the model carries has stresses within the yield surfaces, so no load above
+/// the collapse load of this model is carried by the original one (Radenkovic's first theorem),
+/// as long as no strength softens (has_softening()).
+Model with_associated_flow(const Model& model);
+
+/// Whether a strength of the model falls with plastic flow (a residual value below the peak).
+bool has_softening(const Model& model);
+
 }  // namespace bimrock

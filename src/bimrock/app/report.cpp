@@ -132,7 +132,12 @@ void print_plastic_summary(const Model& model, const PlasticResult& result,
                  c.failed * load.norm());
     fmt::print("; {} yield modes in the mechanism (summary.json, collapse.png)\n",
                c.mechanism.size());
-    if (c.undecided_inside)
+    if (c.associated_bound)
+      fmt::print(
+          "  load control stopped undecided at the carried factor; the failed factor is where the "
+          "same case with associated flow (each dilation equal to its friction) is proven to "
+          "fail, and no flow rule carries more (static theorem)\n");
+    else if (c.undecided_inside)
       fmt::print(
           "  the bracket is wider than its tolerance: the loads inside it could be neither carried "
           "nor proven to fail (with non-associated flow, the upper end can be the associated "

@@ -196,6 +196,7 @@ json run_summary(const Model& model, const ElasticSolution& fields, const Plasti
                        {"failed_point_load_N", c.failed * load},
                        {"unstable_at_first_load", c.unstable_at_first_load},
                        {"undecided_inside", c.undecided_inside},
+                       {"associated_bound", c.associated_bound},
                        {"limit_point", c.limit_point},
                        {"limit_point_plateau_m", c.plateau},
                        {"limit_point_elastic_m", c.elastic},
