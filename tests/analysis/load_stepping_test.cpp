@@ -256,12 +256,34 @@ TEST(LoadStepping, CutToTheToleranceWithoutAProofTheShortestFailingStepIsSearche
     if (from + step <= kCollapse)
       return carried_to(from + step);
     Trial t = failed();
-    t.lcp_size = kExhaustiveRows + 1;
+    t.lcp_size = kRootOnlyRows + 1;
     return t;
   }};
   large.factor = 0.5;
   EXPECT_EQ(large.step(0.25, options).outcome, SteppedIncrement::Outcome::undecided);
   EXPECT_EQ(std::count(large.asked.begin(), large.asked.end(), Thoroughness::exhaustive), 0);
+}
+
+TEST(LoadStepping, NothingCarriedFromZeroTheStepBelowTheToleranceIsSearchedOnce) {
+  // From a stage factor of 0 the relative tolerance is never reached: once the step that fails
+  // is below the tolerance of the stage's load, it is searched exhaustively, once. Here that
+  // search proves it (a structure unstable under its first load); the cuts stop there.
+  const SteppingOptions options{.bracket_tolerance = 1e-4, .first_load = true};
+  Structure s;
+  s.answer = [&s](double, double) {
+    return s.asked.back() == Thoroughness::exhaustive ? collapsed() : failed();
+  };
+  const SteppedIncrement out = s.step(0.25, options);
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_TRUE(out.unstable_at_first_load);
+  EXPECT_LE(out.failed, options.bracket_tolerance);
+  EXPECT_GT(out.failed, 0.5 * options.bracket_tolerance);  // the first step below it
+  EXPECT_EQ(std::count(s.asked.begin(), s.asked.end(), Thoroughness::exhaustive), 1);
+  // Where it decides nothing, the cuts go on as before, with no second such search.
+  Structure never{.answer = [](double, double) { return failed(); }};
+  EXPECT_EQ(never.step(0.25, options).outcome, SteppedIncrement::Outcome::undecided);
+  EXPECT_EQ(std::count(never.asked.begin(), never.asked.end(), Thoroughness::exhaustive), 1);
+  EXPECT_LT(never.asked.size(), 200u);
 }
 
 TEST(LoadStepping, AKinkSplitsTheStepAtTheKink) {

@@ -158,12 +158,17 @@ TEST(BranchAndBoundLcp, NonNegativeQIsSolvedByZero) {
 // round-off failure, nor a proof); the default budget solves it (z = 1).
 TEST(BranchAndBoundLcp, ANodesLpStopsAtTheBudgetLeft) {
   const LcpProblem p{MatrixXd::Identity(30, 30), VectorXd::Constant(30, -1.0)};
-  BranchAndBoundLcp tight(BranchAndBoundOptions{.max_work = 1.0});
+  BranchAndBoundLcp tight(BranchAndBoundOptions{.max_work = 1.0, .max_root_work = 1.0});
   const LcpResult stopped = tight.solve(p);
   EXPECT_EQ(stopped.status, LcpStatus::iteration_limit) << to_string(stopped.status);
   const LcpResult r = search(p);
   expect_solved_measured(p, r);
   EXPECT_TRUE(r.z.isApprox(VectorXd::Ones(30), 1e-12));
+  // The root's LP has a budget of its own: with the search's at one pivot, it still solves.
+  BranchAndBoundLcp root_only(BranchAndBoundOptions{.max_work = 1.0, .max_root_work = 1e9});
+  const LcpResult at_root = root_only.solve(p);
+  expect_solved_measured(p, at_root);
+  EXPECT_EQ(at_root.steps, 1);
 }
 
 TEST(BranchAndBoundLcp, RefusesLcpsLargerThanItsLimit) {

@@ -98,28 +98,37 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
         !options.displacement_control &&
         std::abs(upper - out.carried) <= options.bracket_tolerance * std::abs(upper);
     // Cut to the tolerance without a proof: the shortest step that failed, undecided, is
-    // searched once more, exhaustively, where its LCP is small enough for that search to reach
-    // a proof (kExhaustiveRows).
+    // searched once more, exhaustively (the whole search up to kExhaustiveRows rows, the root
+    // LP alone up to kRootOnlyRows).
     if (at_tolerance &&
-        (proven || exhausted || !(failing_step > 0.0) || failing_rows > kExhaustiveRows))
+        (proven || exhausted || !(failing_step > 0.0) || failing_rows > kRootOnlyRows))
       break;
-    if (at_tolerance)
+    // Nothing carried from a stage factor of 0, where the relative tolerance is never reached:
+    // the same search once the step is below the tolerance of the stage's load (from rest with
+    // no cohesion every cut asks the same LCP again), and the cuts go on where it decides
+    // nothing.
+    const bool search_at_start = !options.displacement_control && !proven && !exhausted &&
+                                 !carried_any && out.carried == 0.0 && failing_step > 0.0 &&
+                                 upper <= options.bracket_tolerance &&
+                                 failing_rows <= kRootOnlyRows;
+    const bool search = at_tolerance || search_at_start;
+    if (search)
       exhausted = true;
     // After a numerical failure and a part carried, the rest is tried again whole; where that
     // fails too, the next parts grow from the last one instead (near a limit load the steps
     // that carry are small, and trying the whole rest before each costs a bisection or more).
     const bool retrying = retry;
-    const double trial = at_tolerance ? failing_step
-                         : !retry     ? (aim ? kAimAtBound : 0.5) * failing_step
-                         : growing    ? std::min(remaining, kGrowth * part_carried)
-                                      : remaining;
+    const double trial = search    ? failing_step
+                         : !retry  ? (aim ? kAimAtBound : 0.5) * failing_step
+                         : growing ? std::min(remaining, kGrowth * part_carried)
+                                   : remaining;
     retry = false;
     // Inside a proven bracket a trial that stays undecided moves neither end: the pivoting
     // methods' search on a large LCP (seconds, where the active-set method takes milliseconds)
     // is left out there.
-    const Thoroughness thoroughness = at_tolerance ? Thoroughness::exhaustive
-                                      : proven     ? Thoroughness::quick
-                                                   : Thoroughness::thorough;
+    const Thoroughness thoroughness = search   ? Thoroughness::exhaustive
+                                      : proven ? Thoroughness::quick
+                                               : Thoroughness::thorough;
     const Trial part = try_step(trial, thoroughness);
     if (part.status == Trial::Status::carried) {
       keep(part);

@@ -43,12 +43,14 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
     return nodes * per_node + static_cast<double>(polyhedron.pivots()) * per_pivot;
   };
   while (!stack.empty()) {
-    if (nodes >= options_.max_nodes || work() > options_.max_work)
+    const double budget =
+        nodes == 0 ? std::max(options_.max_root_work, options_.max_work) : options_.max_work;
+    if (nodes >= options_.max_nodes || work() > budget)
       return make_lcp_result(problem, LcpStatus::iteration_limit, last, nodes);
     const std::vector<Fix> fix = std::move(stack.back());
     stack.pop_back();
     // A node's LP gets what is left of the budget: one that stalls ends the search there.
-    const auto pivots_left = static_cast<long>((options_.max_work - work()) / per_pivot) + 1;
+    const auto pivots_left = static_cast<long>((budget - work()) / per_pivot) + 1;
     const LcpPolyhedron::Vertex v = polyhedron.vertex(fix, pivots_left);
     ++nodes;
     if (v.status == LcpPolyhedron::Status::failed) {

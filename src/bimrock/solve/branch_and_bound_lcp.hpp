@@ -36,6 +36,11 @@ struct BranchAndBoundOptions {
   /// the whole search.
   int max_nodes = 20000;
   double max_work = 1e9;
+  /// The root's LP alone may take this much (the search below it shares max_work). The root
+  /// decides the LCP of a positive semi-definite M (associated flow), which has a solution
+  /// exactly where that LP is feasible, and an empty root proves any LCP unsolvable; on an LCP
+  /// of 1 000 - 2 000 rows it can take more than a whole search's budget.
+  double max_root_work = 1e9;
   /// Larger LCPs are not searched (iteration_limit).
   Eigen::Index max_size = 1000;
   /// A solution must satisfy LcpResiduals::worst_relative() <= accuracy.

@@ -281,7 +281,10 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
       dense_first_(kDenseFirstFailures, tuning.dense_first_period),
       exhaustive_(BranchAndBoundOptions{
           .max_nodes = static_cast<int>(kExhaustiveSearch * BranchAndBoundOptions{}.max_nodes),
-          .max_work = kExhaustiveSearch * BranchAndBoundOptions{}.max_work}) {}
+          .max_work = kExhaustiveSearch * BranchAndBoundOptions{}.max_work}),
+      root_only_(BranchAndBoundOptions{.max_nodes = 1,
+                                       .max_root_work = 30.0 * BranchAndBoundOptions{}.max_work,
+                                       .max_size = kRootOnlyRows}) {}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
                                          bool stop_unsolved, Thoroughness thoroughness,
@@ -466,7 +469,9 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     }
     const bool exhaustive = thoroughness == Thoroughness::exhaustive;
     if (!decided(r) && (exhaustive || !(undecided_ && same_up_to_scale(*undecided_, dense)))) {
-      r = exhaustive ? exhaustive_.solve(dense) : complete_.solve(dense);
+      r = !exhaustive            ? complete_.solve(dense)
+          : m <= kExhaustiveRows ? exhaustive_.solve(dense)
+                                 : root_only_.solve(dense);
       if (!decided(r))
         undecided_ = dense;
     }
