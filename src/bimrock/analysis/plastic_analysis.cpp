@@ -423,14 +423,17 @@ void bound_by_associated_flow(const Model& model, const YieldPointIndex& index,
   const bool bounds = bound && bound->stage == stop.stage && !bound->limit_point &&
                       bound->failed >= stop.factor * (1.0 - options.bracket_tolerance);
   if (!bounds) {
-    result.stopped->reason += bound && bound->stage == stop.stage && !bound->limit_point
-                                  ? "; associated flow collapses below the load carried here, "
-                                    "which no flow rule allows: round-off"
-                              : trial.stopped && trial.stopped->stage == stop.stage
-                                  ? "; associated flow stops undecided in this stage too"
-                              : !bound || bound->stage > stop.stage
-                                  ? "; associated flow carries this stage, so bounds nothing"
-                                  : "; associated flow collapses in an earlier stage";
+    const bool same_stage = bound && bound->stage == stop.stage;
+    result.stopped->reason +=
+        same_stage && !bound->limit_point
+            ? "; associated flow collapses below the load carried here, which no flow rule "
+              "allows: round-off"
+        : same_stage    ? "; associated flow reaches only a limit point in this stage, not a proof"
+        : trial.stopped ? (trial.stopped->stage == stop.stage
+                               ? "; associated flow stops undecided in this stage too"
+                               : "; associated flow stops undecided in an earlier stage")
+        : bound         ? "; associated flow collapses in an earlier stage"
+                        : "; associated flow carries this stage, so bounds nothing";
     return;
   }
   Collapse c = *bound;
