@@ -110,6 +110,7 @@ void load_dense(glp_prob* p, const Eigen::MatrixXd& a) {
 
 struct LcpPolyhedron::Lp {
   GlpProb prob;
+  GlpProb farkas;     ///< the Farkas system of a node (farkas()), built at its first use
   Eigen::MatrixXd m;  ///< M / max|M|
   Eigen::VectorXd q;  ///< q / max|q|
 };
@@ -181,42 +182,41 @@ long LcpPolyhedron::pivots() const {
 
 std::optional<Eigen::VectorXd> LcpPolyhedron::farkas(const std::vector<Fix>& fix) const {
   const Index n = problem_.size();
-  // Columns: y_i >= 0 for every row, and y_i^- >= 0 for the rows held at w_i = 0 (there y_i is
-  // y_i - y_i^-); rows: (M^T y)_j <= 0 where z_j is not held at zero, and q . y = -1; the least
-  // sum of |y|.
-  std::vector<Index> held;
-  for (Index i = 0; i < n; ++i)
-    if (fix[static_cast<std::size_t>(i)] == Fix::w)
-      held.push_back(i);
-  const Index cols = n + static_cast<Index>(held.size());
-  Eigen::MatrixXd a(n + 1, cols);
-  a.topLeftCorner(n, n) = lp_->m.transpose();
-  a.block(n, 0, 1, n) = lp_->q.transpose();
-  for (std::size_t k = 0; k < held.size(); ++k)
-    a.col(n + static_cast<Index>(k)) = -a.col(held[k]);
   const QuietGlpk quiet;
-  GlpProb lp;
-  glp_prob* p = lp.p;
-  glp_set_obj_dir(p, GLP_MIN);
-  glp_add_rows(p, static_cast<int>(n + 1));
-  glp_add_cols(p, static_cast<int>(cols));
-  load_dense(p, a);
-  for (Index j = 0; j < n; ++j)
-    glp_set_row_bnds(p, static_cast<int>(j + 1),
-                     fix[static_cast<std::size_t>(j)] == Fix::z ? GLP_FR : GLP_UP, 0.0, 0.0);
-  glp_set_row_bnds(p, static_cast<int>(n + 1), GLP_FX, -1.0, -1.0);
-  for (Index j = 0; j < cols; ++j) {
-    glp_set_col_bnds(p, static_cast<int>(j + 1), GLP_LO, 0.0, 0.0);
-    glp_set_obj_coef(p, static_cast<int>(j + 1), 1.0);
+  // Columns: y_i >= 0 and y_i^- >= 0 (held at zero except on the rows held at w_i = 0, where
+  // y_i is y_i - y_i^-); rows: (M^T y)_j <= 0 (free where z_j is held at zero), and q . y = -1;
+  // the least sum of |y|. Built once: only bounds change from node to node, and each solve
+  // starts from the last basis, as vertex() does.
+  glp_prob* p = lp_->farkas.p;
+  const bool first = glp_get_num_cols(p) == 0;
+  if (first) {
+    Eigen::MatrixXd a(n + 1, 2 * n);
+    a.topLeftCorner(n, n) = lp_->m.transpose();
+    a.block(n, 0, 1, n) = lp_->q.transpose();
+    a.rightCols(n) = -a.leftCols(n);
+    glp_set_obj_dir(p, GLP_MIN);
+    glp_add_rows(p, static_cast<int>(n + 1));
+    glp_add_cols(p, static_cast<int>(2 * n));
+    load_dense(p, a);
+    glp_set_row_bnds(p, static_cast<int>(n + 1), GLP_FX, -1.0, -1.0);
+    for (Index j = 0; j < 2 * n; ++j)
+      glp_set_obj_coef(p, static_cast<int>(j + 1), 1.0);
   }
-  glp_adv_basis(p, 0);
+  for (Index j = 0; j < n; ++j) {
+    const Fix f = fix[static_cast<std::size_t>(j)];
+    const int k = static_cast<int>(j + 1);
+    glp_set_row_bnds(p, k, f == Fix::z ? GLP_FR : GLP_UP, 0.0, 0.0);
+    glp_set_col_bnds(p, k, GLP_LO, 0.0, 0.0);
+    glp_set_col_bnds(p, static_cast<int>(n) + k, f == Fix::w ? GLP_LO : GLP_FX, 0.0, 0.0);
+  }
+  if (first)
+    glp_adv_basis(p, 0);
   if (!simplex(p, n, std::numeric_limits<long>::max()) || glp_get_status(p) != GLP_OPT)
     return std::nullopt;
   Eigen::VectorXd y(n);
   for (Index j = 0; j < n; ++j)
-    y(j) = std::max(0.0, glp_get_col_prim(p, static_cast<int>(j + 1)));
-  for (std::size_t k = 0; k < held.size(); ++k)
-    y(held[k]) -= std::max(0.0, glp_get_col_prim(p, static_cast<int>(n + 1 + k)));
+    y(j) = std::max(0.0, glp_get_col_prim(p, static_cast<int>(j + 1))) -
+           std::max(0.0, glp_get_col_prim(p, static_cast<int>(n + j + 1)));
   return y;
 }
 
