@@ -1,5 +1,6 @@
 #include <bimrock/solve/least_norm_pivoting.hpp>
 
+#include <algorithm>
 #include <vector>
 
 #include <Eigen/QR>
@@ -8,6 +9,12 @@ namespace bimrock {
 
 using Index = Eigen::Index;
 
+/// How much larger than the first round's set a later round's may be: kLargestGrowth times it,
+/// and kExtraRows more (on small LCPs the first set can be half the solution's, and their rounds
+/// cost next to nothing).
+constexpr double kLargestGrowth = 1.5;
+constexpr double kExtraRows = 50.0;
+
 std::optional<LcpResult> least_norm_pivoting(const LcpProblem& p, const Eigen::VectorXd& near,
                                              double accuracy, int rounds, int steps) {
   const RelativePairs rel = relative_pairs(p, near);
@@ -15,6 +22,7 @@ std::optional<LcpResult> least_norm_pivoting(const LcpProblem& p, const Eigen::V
   for (Index i = 0; i < p.size(); ++i)
     in_a[static_cast<std::size_t>(i)] = rel.z(i) > rel.w(i);
   Eigen::VectorXd corrected = near;
+  double first_size = 0.0;  // rows of the first round's set
   for (int round = 0; round < rounds; ++round) {
     std::vector<Index> active;
     for (Index i = 0; i < p.size(); ++i)
@@ -48,7 +56,12 @@ std::optional<LcpResult> least_norm_pivoting(const LcpProblem& p, const Eigen::V
         moved = true;
       }
     }
-    if (!moved)
+    // Near a solution the sets stay within a few rows of the first; sets that grow far beyond
+    // it are drifting away, and each round costs the cube of its size.
+    const auto next_size = static_cast<double>(std::count(in_a.begin(), in_a.end(), char{1}));
+    if (round == 0)
+      first_size = static_cast<double>(active.size());
+    if (!moved || next_size > kLargestGrowth * first_size + kExtraRows)
       break;
   }
   return std::nullopt;

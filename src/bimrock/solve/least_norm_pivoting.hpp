@@ -19,8 +19,9 @@ namespace bimrock {
 /// (staying next to it), the least-norm solution from zero, or `near` itself: the first that
 /// satisfies the LCP to `accuracy` (LcpResiduals::worst_relative()) is returned, solved, with
 /// `steps` as its count. Where none does, the rows the correction violates join A, those it
-/// takes below zero leave, and A is tried again, up to `rounds` times. Empty where no round
-/// succeeds.
+/// takes below zero leave, and A is tried again, up to `rounds` times, or until A has grown to
+/// more than 1.5 times the first round's rows and 50 more (the sets then drift away from
+/// `near`). Empty where no round succeeds.
 [[nodiscard]] std::optional<LcpResult> least_norm_pivoting(const LcpProblem& problem,
                                                            const Eigen::VectorXd& near,
                                                            double accuracy, int rounds, int steps);
