@@ -1,6 +1,7 @@
 // The nodes of the LCP's polyhedron that branch and bound prunes as empty, and the Farkas
 // certificates that prove them so. Each node's emptiness and each certificate are worked by hand
 // on LCP(M, q) with M = [[2, 1], [1, -1]], q = (2, -2): w1 = 2 z1 + z2 + 2, w2 = z1 - z2 - 2.
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -35,6 +36,58 @@ TEST(LcpPolyhedron, AnEmptyNodeIsCertifiedWithTheRowsItHolds) {
   // (-2, -1), q . y = -2.
   EXPECT_EQ(polyhedron.vertex({Fix::w, Fix::none}).status, LcpPolyhedron::Status::empty);
   EXPECT_TRUE(polyhedron.certified_empty({Fix::w, Fix::none}));
+}
+
+// Whether y or -y proves the node `fix` of `problem` empty (Farkas' lemma, certifies_empty()).
+bool either_sign_certifies(const LcpProblem& problem, const std::vector<Fix>& fix,
+                           const VectorXd& y) {
+  std::vector<char> held_w;
+  std::vector<char> held_z;
+  for (const Fix f : fix) {
+    held_w.push_back(f == Fix::w);
+    held_z.push_back(f == Fix::z);
+  }
+  const double m_max = problem.m.cwiseAbs().maxCoeff();
+  if (y.size() != problem.size())
+    return false;
+  for (const double sign : {1.0, -1.0}) {
+    const VectorXd r = sign * y;
+    if (certifies_empty(problem.q, r, problem.m.transpose() * r,
+                        problem.m.cwiseAbs().transpose() * r.cwiseAbs(), m_max, held_w, held_z,
+                        0.0))
+      return true;
+  }
+  return false;
+}
+
+TEST(LcpPolyhedron, AnEmptyVertexCarriesItsCertificateInItsDuals) {
+  // The two empty nodes above: the simplex's final basis already holds their proofs.
+  LcpPolyhedron polyhedron(kTwoRowLcp);
+  for (const std::vector<Fix>& fix : {std::vector<Fix>{Fix::z, Fix::none}, {Fix::w, Fix::none}}) {
+    const LcpPolyhedron::Vertex v = polyhedron.vertex(fix);
+    ASSERT_EQ(v.status, LcpPolyhedron::Status::empty);
+    EXPECT_TRUE(either_sign_certifies(kTwoRowLcp, fix, v.duals));
+  }
+  // Every empty node of random LCPs of 6 rows, each row free, held at z = 0 or at w = 0.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int empty = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const LcpProblem p{MatrixXd::NullaryExpr(6, 6, [&] { return u(rng); }),
+                       VectorXd::NullaryExpr(6, [&] { return u(rng); })};
+    LcpPolyhedron node_lps(p);
+    for (int code = 0; code < 729; code += 7) {  // a spread of the 3^6 ways to hold the rows
+      std::vector<Fix> fix;
+      for (int i = 0, c = code; i < 6; ++i, c /= 3)
+        fix.push_back(static_cast<Fix>(c % 3));
+      const LcpPolyhedron::Vertex v = node_lps.vertex(fix);
+      if (v.status != LcpPolyhedron::Status::empty)
+        continue;
+      ++empty;
+      EXPECT_TRUE(either_sign_certifies(p, fix, v.duals)) << "trial " << trial << " code " << code;
+    }
+  }
+  EXPECT_GE(empty, 100);  // the test sees many empty nodes
 }
 
 TEST(CertifiesEmpty, HoldsEachConditionOnlyWhereTheNodeDoes) {

@@ -35,8 +35,9 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
   const double per_node = per_pivot * static_cast<double>(n) / 3.0;
   LcpPolyhedron polyhedron(problem);
   std::vector<std::vector<Fix>> stack{std::vector<Fix>(static_cast<std::size_t>(n), Fix::none)};
-  bool complete = true;                        // every node so far decided (none failed)
-  std::vector<std::vector<Fix>> empty_leaves;  // nodes below the root the simplex found empty
+  bool complete = true;  // every node so far decided (none failed)
+  // Nodes below the root the simplex found empty and its own duals do not prove so.
+  std::vector<std::vector<Fix>> empty_leaves;
   int nodes = 0;
   Eigen::VectorXd last = Eigen::VectorXd::Zero(n);
   const auto work = [&] {
@@ -59,7 +60,8 @@ LcpResult BranchAndBoundLcp::solve(const LcpProblem& problem, const Eigen::Vecto
     }
     if (v.status == LcpPolyhedron::Status::empty) {
       if (nodes > 1) {
-        empty_leaves.push_back(fix);
+        if (!polyhedron.certified_by_duals(fix, v.duals))
+          empty_leaves.push_back(fix);
         continue;
       }
       // The root: no z >= 0 makes w >= 0. Farkas' lemma gives the proof.

@@ -106,6 +106,41 @@ void load_dense(glp_prob* p, const Eigen::MatrixXd& a) {
   glp_load_matrix(p, static_cast<int>(ar.size() - 1), ia.data(), ja.data(), ar.data());
 }
 
+/// The duals of the phase-one objective (the sum of the bound violations of the basic
+/// variables) at the final basis of a simplex that ended infeasible: pi with B^T pi = c_B,
+/// c_B = +1 above an upper bound, -1 below a lower one. Where phase one ended at its optimum,
+/// +-pi is a Farkas certificate of the rows; unchecked. Empty where the basis has no
+/// factorization or nothing is violated.
+Eigen::VectorXd phase_one_duals(glp_prob* p) {
+  const int m = glp_get_num_rows(p);
+  if (!glp_bf_exists(p) && glp_factorize(p) != 0)
+    return {};
+  std::vector<double> c(static_cast<std::size_t>(m) + 1, 0.0);  // 1-based, as GLPK's
+  bool violated = false;
+  for (int k = 1; k <= m; ++k) {
+    const int v = glp_get_bhead(p, k);
+    const bool row = v <= m;
+    const int i = row ? v : v - m;
+    const int type = row ? glp_get_row_type(p, i) : glp_get_col_type(p, i);
+    const double x = row ? glp_get_row_prim(p, i) : glp_get_col_prim(p, i);
+    const double lb = row ? glp_get_row_lb(p, i) : glp_get_col_lb(p, i);
+    const double ub = row ? glp_get_row_ub(p, i) : glp_get_col_ub(p, i);
+    const double tol = 1e-9 * (1.0 + std::abs(x));
+    const bool has_lb = type == GLP_LO || type == GLP_DB || type == GLP_FX;
+    const bool has_ub = type == GLP_UP || type == GLP_DB || type == GLP_FX;
+    double& ck = c[static_cast<std::size_t>(k)];
+    if (has_ub && x > ub + tol)
+      ck = 1.0;
+    else if (has_lb && x < lb - tol)
+      ck = -1.0;
+    violated = violated || ck != 0.0;
+  }
+  if (!violated)
+    return {};
+  glp_btran(p, c.data());
+  return Eigen::Map<const Eigen::VectorXd>(c.data() + 1, m);
+}
+
 }  // namespace
 
 struct LcpPolyhedron::Lp {
@@ -151,7 +186,7 @@ LcpPolyhedron::Vertex LcpPolyhedron::vertex(const std::vector<Fix>& fix, long ma
   if (static_cast<Index>(fix.size()) != n)
     throw std::invalid_argument("LcpPolyhedron: one fix per row");
   if (n == 0)
-    return {Status::feasible, Eigen::VectorXd()};
+    return {Status::feasible, Eigen::VectorXd(), {}};
   const QuietGlpk quiet;
   glp_prob* p = lp_->prob.p;
   for (Index i = 0; i < n; ++i) {
@@ -164,16 +199,16 @@ LcpPolyhedron::Vertex LcpPolyhedron::vertex(const std::vector<Fix>& fix, long ma
     glp_set_col_bnds(p, k, f == Fix::z ? GLP_FX : GLP_LO, 0.0, 0.0);
   }
   if (!simplex(p, n, max_pivots))
-    return {Status::failed, {}};
+    return {Status::failed, {}, {}};
   const int status = glp_get_status(p);
   if (status == GLP_NOFEAS)
-    return {Status::empty, {}};
+    return {Status::empty, {}, phase_one_duals(p)};
   if (status != GLP_OPT && status != GLP_FEAS)
-    return {Status::failed, {}};
+    return {Status::failed, {}, {}};
   Eigen::VectorXd z(n);
   for (Index j = 0; j < n; ++j)
     z(j) = std::max(0.0, glp_get_col_prim(p, static_cast<int>(j + 1)));
-  return {Status::feasible, z * (q_max_ / m_max_)};
+  return {Status::feasible, z * (q_max_ / m_max_), {}};
 }
 
 long LcpPolyhedron::pivots() const {
@@ -231,9 +266,10 @@ std::optional<Eigen::VectorXd> LcpPolyhedron::certificate() const {
   return Eigen::VectorXd(*r / top);
 }
 
-bool LcpPolyhedron::certified_empty(const std::vector<Fix>& fix) {
+bool LcpPolyhedron::certifies(const std::vector<Fix>& fix, const Eigen::VectorXd& y,
+                              bool either_sign) const {
   const Index n = problem_.size();
-  if (static_cast<Index>(fix.size()) != n || n == 0)
+  if (static_cast<Index>(fix.size()) != n || n == 0 || y.size() != n)
     return false;
   std::vector<char> held_w(fix.size(), 0);
   std::vector<char> held_z(fix.size(), 0);
@@ -241,19 +277,27 @@ bool LcpPolyhedron::certified_empty(const std::vector<Fix>& fix) {
     held_w[i] = fix[i] == Fix::w;
     held_z[i] = fix[i] == Fix::z;
   }
-  // The check, in double precision on the scaled data (max|M| = 1).
-  const auto certifies = [&](const Eigen::VectorXd& y) {
-    return certifies_empty(lp_->q, y, lp_->m.transpose() * y,
-                           lp_->m.cwiseAbs().transpose() * y.cwiseAbs(), 1.0, held_w, held_z,
-                           kHeldSlack);
-  };
+  // In double precision on the scaled data (max|M| = 1).
+  const Eigen::VectorXd mty = lp_->m.transpose() * y;
+  const Eigen::VectorXd size = lp_->m.cwiseAbs().transpose() * y.cwiseAbs();
+  return certifies_empty(lp_->q, y, mty, size, 1.0, held_w, held_z, kHeldSlack) ||
+         (either_sign && certifies_empty(lp_->q, -y, -mty, size, 1.0, held_w, held_z, kHeldSlack));
+}
+
+bool LcpPolyhedron::certified_by_duals(const std::vector<Fix>& fix,
+                                       const Eigen::VectorXd& duals) const {
+  // GLPK's sign convention of a row's dual depends on its bound: either sign may be the proof.
+  return certifies(fix, duals, true);
+}
+
+bool LcpPolyhedron::certified_empty(const std::vector<Fix>& fix) {
   // Siblings and cousins are often empty for the same reason: a recent certificate is checked
   // (n^2) before an LP is solved (many pivots of n^2 each).
   for (auto c = certificates_.rbegin(); c != certificates_.rend(); ++c)
-    if (certifies(*c))
+    if (certifies(fix, *c, false))
       return true;
   std::optional<Eigen::VectorXd> y = farkas(fix);
-  if (!y || !certifies(*y))
+  if (!y || !certifies(fix, *y, false))
     return false;
   if (certificates_.size() == kKeptCertificates)
     certificates_.erase(certificates_.begin());

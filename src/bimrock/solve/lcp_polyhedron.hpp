@@ -30,6 +30,9 @@ class LcpPolyhedron {
   struct Vertex {
     Status status = Status::failed;
     Eigen::VectorXd z;  ///< for feasible: a vertex, in the problem's own units
+    /// For empty: the simplex's phase-one duals at its last basis (one per row, unchecked),
+    /// a Farkas certificate of the node up to sign where phase one ended at its optimum.
+    Eigen::VectorXd duals;
   };
 
   explicit LcpPolyhedron(const LcpProblem& problem);
@@ -60,10 +63,20 @@ class LcpPolyhedron {
   /// the degenerate LCPs of cohesionless joints round-off can make it call a feasible node empty.
   [[nodiscard]] bool certified_empty(const std::vector<Fix>& fix);
 
+  /// Whether `duals` (Vertex::duals of the node `fix`), of either sign, is a Farkas certificate
+  /// of the node as certified_empty() checks one: the simplex's own proof, no LP solved.
+  [[nodiscard]] bool certified_by_duals(const std::vector<Fix>& fix,
+                                        const Eigen::VectorXd& duals) const;
+
  private:
   /// The least-|y|_1 y of the Farkas system of the node `fix` (see certified_empty()), with
   /// q . y = -1 in the scaled units, as the LP found it, unchecked; none where the LP has none.
   [[nodiscard]] std::optional<Eigen::VectorXd> farkas(const std::vector<Fix>& fix) const;
+
+  /// Whether y (or -y, with `either_sign`) is a Farkas certificate of the node `fix`
+  /// (certified_empty()), in the scaled units.
+  [[nodiscard]] bool certifies(const std::vector<Fix>& fix, const Eigen::VectorXd& y,
+                               bool either_sign) const;
 
   struct Lp;
   const LcpProblem& problem_;
