@@ -1,6 +1,7 @@
 // The nodes of the LCP's polyhedron that branch and bound prunes as empty, and the Farkas
 // certificates that prove them so. Each node's emptiness and each certificate are worked by hand
-// on LCP(M, q) with M = [[2, 1], [1, -1]], q = (2, -2): w1 = 2 z1 + z2 + 2, w2 = z1 - z2 - 2.
+// on LCP(M, q) with M = [[2, 1], [1, -1]], q = (2, -2): w1 = 2 z1 + z2 + 2, w2 = z1 - z2 - 2; the
+// simplex's own duals are checked against Farkas' lemma on random LCPs as well.
 #include <random>
 #include <vector>
 
@@ -68,7 +69,7 @@ TEST(LcpPolyhedron, AnEmptyVertexCarriesItsCertificateInItsDuals) {
     ASSERT_EQ(v.status, LcpPolyhedron::Status::empty);
     EXPECT_TRUE(either_sign_certifies(kTwoRowLcp, fix, v.duals));
   }
-  // Every empty node of random LCPs of 6 rows, each row free, held at z = 0 or at w = 0.
+  // The empty nodes of random LCPs of 6 rows, each row free, held at z = 0 or at w = 0.
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int empty = 0;
