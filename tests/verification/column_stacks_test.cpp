@@ -81,5 +81,27 @@ TEST(ColumnStacks, StandUnderTheirWeightForEveryFrictionAndDilation) {
   }
 }
 
+TEST(ColumnStacks, NoRouteOfTheSolverReportsThemUnstable) {
+  // The same stacks at 50 deg without dilation, each increment solved with a route of the
+  // solver left out. Where load control leaves the first increment undecided, displacement
+  // control finds the load factor level at zero (the cohesionless joints have no strength
+  // there): that is no proof, and the stacks stand, so the analysis may stop but never report
+  // a collapse.
+  for (const int variant : {0, 1}) {
+    PlasticTuning tuning;
+    if (variant == 0)
+      tuning.solver.splitting = false;
+    else
+      tuning.solver.active_set = false;
+    const PlasticResult r =
+        run_plastic_analysis(build_model(column_stacks(50.0, 0.0)), PlasticOptions{}, {}, tuning);
+    EXPECT_FALSE(r.collapse.has_value()) << "variant " << variant;
+    if (r.stopped) {
+      EXPECT_NE(r.stopped->reason.find("proves no collapse"), std::string::npos)
+          << r.stopped->reason;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace bimrock

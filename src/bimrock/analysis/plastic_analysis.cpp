@@ -332,6 +332,19 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
           off_grid = true;
           continue;
         }
+        if (past.outcome == LimitPoint::Outcome::limit_point && these.first_load &&
+            past.peak <= options.bracket_tolerance) {
+          // Nothing carried, and the load factor level at zero from the start: near zero load
+          // joints without cohesion or tensile strength have next to no strength, so a
+          // prescribed motion meets no resistance whether or not the structure carries its
+          // load. Only load control's proof says "unstable under the first load".
+          result.stopped = undecided_stop(model, st, stage, result.state.stage_factor, false);
+          result.stopped->reason +=
+              " (displacement control of the block that moved most found the load factor level "
+              "at zero from the start, which proves no collapse: near zero load, joints without "
+              "cohesion or tensile strength have next to no strength)";
+          return;
+        }
         if (past.outcome == LimitPoint::Outcome::limit_point) {
           result.collapse = describe_collapse(st, past.peak, past.peak, nullptr, &*past.last);
           Collapse& c = *result.collapse;
@@ -340,7 +353,6 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
           c.plateau = past.plateau;
           c.fell = past.fell;
           c.elastic = elastic;
-          c.unstable_at_first_load = these.first_load && past.peak <= options.bracket_tolerance;
           return;
         }
       }
