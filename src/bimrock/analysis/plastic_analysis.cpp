@@ -332,20 +332,19 @@ void run_stages(const Model& model, StageStructure& structure, const YieldPointI
           off_grid = true;
           continue;
         }
-        if (past.outcome == LimitPoint::Outcome::limit_point && these.first_load &&
-            past.peak <= options.bracket_tolerance) {
-          // Nothing carried, and the load factor level at zero from the start: near zero load
-          // joints without cohesion or tensile strength have next to no strength, so a
-          // prescribed motion meets no resistance whether or not the structure carries its
-          // load. Only load control's proof says "unstable under the first load".
-          result.stopped = undecided_stop(model, st, stage, result.state.stage_factor, false);
-          result.stopped->reason +=
-              " (displacement control of the block that moved most found the load factor level "
-              "at zero from the start, which proves no collapse: near zero load, joints without "
-              "cohesion or tensile strength have next to no strength)";
-          return;
-        }
         if (past.outcome == LimitPoint::Outcome::limit_point) {
+          if (these.first_load && past.peak <= options.bracket_tolerance) {
+            // Nothing carried, and the load factor level at zero from the start: near zero
+            // load joints without cohesion or tensile strength have next to no strength, so a
+            // prescribed motion meets no resistance whether or not the structure carries its
+            // load. Only load control's proof says "unstable under the first load".
+            result.stopped = undecided_stop(model, st, stage, result.state.stage_factor, false);
+            result.stopped->reason +=
+                " (displacement control of the block that moved most found the load factor "
+                "level at zero from the start, which proves no collapse: near zero load, joints "
+                "without cohesion or tensile strength have next to no strength)";
+            return;
+          }
           result.collapse = describe_collapse(st, past.peak, past.peak, nullptr, &*past.last);
           Collapse& c = *result.collapse;
           c.limit_point = true;
@@ -402,6 +401,22 @@ FactorOfSafety factor_below_one(const Model& model, int fos_stage, StageStructur
   return f;
 }
 
+// What associated flow did where it gives no bound of the stop's load (bound_by_associated_flow):
+// its collapse (`bound`) or its stop (`stopped`), if any, beside the original model's `stop`.
+std::string why_no_bound(const Stop& stop, const std::optional<Collapse>& bound,
+                         const std::optional<Stop>& stopped) {
+  if (bound && bound->stage == stop.stage)
+    return bound->limit_point
+               ? "; associated flow reaches only a limit point in this stage, not a proof"
+               : "; associated flow collapses below the load carried here, which no flow rule "
+                 "allows: round-off";
+  if (stopped)
+    return stopped->stage == stop.stage ? "; associated flow stops undecided in this stage too"
+                                        : "; associated flow stops undecided in an earlier stage";
+  return bound ? "; associated flow collapses in an earlier stage"
+               : "; associated flow carries this stage, so bounds nothing";
+}
+
 // A stop under load control in a model whose flow is not associated and whose strengths do not
 // soften: the same stages, up to the one that stopped, with associated flow. Where they collapse
 // in that stage (a proof, not a limit point), their collapse load bounds this model's from
@@ -435,17 +450,7 @@ void bound_by_associated_flow(const Model& model, const YieldPointIndex& index,
   const bool bounds = bound && bound->stage == stop.stage && !bound->limit_point &&
                       bound->failed >= stop.factor * (1.0 - options.bracket_tolerance);
   if (!bounds) {
-    const bool same_stage = bound && bound->stage == stop.stage;
-    result.stopped->reason +=
-        same_stage && !bound->limit_point
-            ? "; associated flow collapses below the load carried here, which no flow rule "
-              "allows: round-off"
-        : same_stage    ? "; associated flow reaches only a limit point in this stage, not a proof"
-        : trial.stopped ? (trial.stopped->stage == stop.stage
-                               ? "; associated flow stops undecided in this stage too"
-                               : "; associated flow stops undecided in an earlier stage")
-        : bound         ? "; associated flow collapses in an earlier stage"
-                        : "; associated flow carries this stage, so bounds nothing";
+    result.stopped->reason += why_no_bound(stop, bound, trial.stopped);
     return;
   }
   Collapse c = *bound;

@@ -266,8 +266,7 @@ std::optional<Eigen::VectorXd> LcpPolyhedron::certificate() const {
   return Eigen::VectorXd(*r / top);
 }
 
-bool LcpPolyhedron::certifies(const std::vector<Fix>& fix, const Eigen::VectorXd& y,
-                              bool either_sign) const {
+bool LcpPolyhedron::certifies(const std::vector<Fix>& fix, const Eigen::VectorXd& y) const {
   const Index n = problem_.size();
   if (static_cast<Index>(fix.size()) != n || n == 0 || y.size() != n)
     return false;
@@ -278,26 +277,25 @@ bool LcpPolyhedron::certifies(const std::vector<Fix>& fix, const Eigen::VectorXd
     held_z[i] = fix[i] == Fix::z;
   }
   // In double precision on the scaled data (max|M| = 1).
-  const Eigen::VectorXd mty = lp_->m.transpose() * y;
-  const Eigen::VectorXd size = lp_->m.cwiseAbs().transpose() * y.cwiseAbs();
-  return certifies_empty(lp_->q, y, mty, size, 1.0, held_w, held_z, kHeldSlack) ||
-         (either_sign && certifies_empty(lp_->q, -y, -mty, size, 1.0, held_w, held_z, kHeldSlack));
+  return certifies_empty(lp_->q, y, lp_->m.transpose() * y,
+                         lp_->m.cwiseAbs().transpose() * y.cwiseAbs(), 1.0, held_w, held_z,
+                         kHeldSlack);
 }
 
 bool LcpPolyhedron::certified_by_duals(const std::vector<Fix>& fix,
                                        const Eigen::VectorXd& duals) const {
   // GLPK's sign convention of a row's dual depends on its bound: either sign may be the proof.
-  return certifies(fix, duals, true);
+  return certifies(fix, duals) || certifies(fix, -duals);
 }
 
 bool LcpPolyhedron::certified_empty(const std::vector<Fix>& fix) {
   // Siblings and cousins are often empty for the same reason: a recent certificate is checked
   // (n^2) before an LP is solved (many pivots of n^2 each).
   for (auto c = certificates_.rbegin(); c != certificates_.rend(); ++c)
-    if (certifies(fix, *c, false))
+    if (certifies(fix, *c))
       return true;
   std::optional<Eigen::VectorXd> y = farkas(fix);
-  if (!y || !certifies(fix, *y, false))
+  if (!y || !certifies(fix, *y))
     return false;
   if (certificates_.size() == kKeptCertificates)
     certificates_.erase(certificates_.begin());

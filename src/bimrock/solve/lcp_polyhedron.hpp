@@ -73,10 +73,9 @@ class LcpPolyhedron {
   /// q . y = -1 in the scaled units, as the LP found it, unchecked; none where the LP has none.
   [[nodiscard]] std::optional<Eigen::VectorXd> farkas(const std::vector<Fix>& fix) const;
 
-  /// Whether y (or -y, with `either_sign`) is a Farkas certificate of the node `fix`
-  /// (certified_empty()), in the scaled units.
-  [[nodiscard]] bool certifies(const std::vector<Fix>& fix, const Eigen::VectorXd& y,
-                               bool either_sign) const;
+  /// Whether y is a Farkas certificate of the node `fix` (certified_empty()), in the scaled
+  /// units.
+  [[nodiscard]] bool certifies(const std::vector<Fix>& fix, const Eigen::VectorXd& y) const;
 
   struct Lp;
   const LcpProblem& problem_;
