@@ -144,10 +144,13 @@ Stop undecided_stop(const Model& model, int stage_index, const Stage& stage, dou
   std::string why = "the structure is close to a limit load";
   if (has_nonassociated_flow(model)) {
     why += ", or with dilation below friction the increment is beyond the solver's reach";
-    // Radenkovic's first theorem: no flow rule carries more than associated flow.
-    what_to_try +=
-        "; with each dilation set equal to its friction (associated flow) the same case finds "
-        "a collapse load that bounds this one's from above";
+    // Radenkovic's first theorem: no flow rule carries more than associated flow. Under load
+    // control without softening the analysis runs that case itself (bound_by_associated_flow),
+    // and the reason ends with what it found instead.
+    if (stage.control && !has_softening(model))
+      what_to_try +=
+          "; with each dilation set equal to its friction (associated flow) the same "
+          "case finds a collapse load that bounds this one's from above";
   }
   return Stop{stage_index, carried,
               "the increment after stage factor " + std::to_string(carried) +
