@@ -4,7 +4,10 @@
 // collapse, never stopped. The state of every carried increment is checked against two laws
 // independent of how its LCP was solved: the global balance of forces (the support reactions,
 // integrated from the support springs' stresses, balance the applied loads) and every yield
-// function at or below zero.
+// function at or below zero. Each outcome is checked against a second method, the rigid-block
+// limit analysis of support/rigid_block_limit.hpp (a linear program): with associated flow the
+// collapse load is its limit load, and with any other flow rule no load above it is carried
+// (the static theorem).
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -17,6 +20,7 @@
 
 #include "support/cases.hpp"
 #include "support/degrees.hpp"
+#include "support/rigid_block_limit.hpp"
 #include "support/support_reaction.hpp"
 
 namespace bimrock {
@@ -99,6 +103,33 @@ Vec2 applied_force(const CaseSpec& c, const Model& model, int stage, double fact
   return total;
 }
 
+// The same case with each dilation equal to its friction.
+CaseSpec with_associated_flow(CaseSpec c) {
+  for (JointMaterial& m : c.joint_materials)
+    m.strength->dilation = m.strength->friction.peak;
+  return c;
+}
+
+// The push's factors that the structures' rigid-block limit analysis (`limit`) allows: by the
+// static theorem no flow rule carries more, and associated flow collapses there.
+void expect_within_limit_analysis(const PlasticResult& r, double limit, bool associated,
+                                  const std::string& what) {
+  constexpr double kTolerance = 1e-4;  // PlasticOptions::bracket_tolerance, relative
+  if (r.collapse) {
+    EXPECT_EQ(r.collapse->stage, 1) << what << ": gravity alone never fails a column on a base";
+    EXPECT_LE(r.collapse->carried, limit * (1.0 + 1e-6)) << what;
+    if (associated) {
+      EXPECT_GE(r.collapse->failed, limit * (1.0 - 1e-6)) << what;
+      EXPECT_LE(r.collapse->failed - r.collapse->carried, kTolerance * r.collapse->failed) << what;
+    }
+  } else if (!r.stopped) {
+    EXPECT_LE(1.0, limit * (1.0 + 1e-6)) << what << ": carried more than the limit load";
+    if (associated) {
+      EXPECT_GE(limit, 1.0) << what;
+    }
+  }
+}
+
 TEST(RandomStructures, EveryAnalysisCarriesOrProvesItsCollapseInBalance) {
   std::mt19937 rng(2024);
   int collapsed = 0;
@@ -106,6 +137,9 @@ TEST(RandomStructures, EveryAnalysisCarriesOrProvesItsCollapseInBalance) {
   for (int trial = 0; trial < 100; ++trial) {
     const RandomCase rc = random_case(rng);
     const Model model = build_model(rc.spec);
+    const std::optional<double> limit =
+        testing::rigid_block_limit_factor(model, model.stages[0].loads, model.stages[1].loads);
+    ASSERT_TRUE(limit.has_value()) << "trial " << trial << ": its weight alone is carried";
     YieldPointIndex index;
     const std::vector<YieldPoint> points = make_yield_points(model, &index);
     const YieldEvaluator yield(model, points);
@@ -133,6 +167,13 @@ TEST(RandomStructures, EveryAnalysisCarriesOrProvesItsCollapseInBalance) {
     } else if (!r.stopped) {
       ++carried;
     }
+    const std::string what = "trial " + std::to_string(trial) + " (" + rc.description +
+                             "), limit analysis " + std::to_string(*limit);
+    expect_within_limit_analysis(r, *limit, false, what);
+    const PlasticResult a =
+        run_plastic_analysis(build_model(with_associated_flow(rc.spec)), PlasticOptions{});
+    EXPECT_FALSE(a.stopped.has_value()) << what << ", associated: " << a.stopped->reason;
+    expect_within_limit_analysis(a, *limit, true, what + ", associated");
   }
   std::printf("%d carried, %d collapsed\n", carried, collapsed);
   // The family holds both outcomes.

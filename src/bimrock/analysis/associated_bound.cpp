@@ -1,6 +1,6 @@
 #include <bimrock/analysis/associated_bound.hpp>
 
-#include <bimrock/solve/lcp.hpp>
+#include <bimrock/analysis/step_certificate.hpp>
 
 namespace bimrock {
 
@@ -33,22 +33,12 @@ AssociatedBound associated_bound(const StageContext& ctx, const AnalysisState& s
   if (r.size() == 0 || !(r.maxCoeff() > 0.0))
     return bound;
   r /= r.maxCoeff();
-  // The certificate on the non-associated LCP: M^T r = N^T r - Phi^T K^-1 C^T r <= 0 and
-  // q . r < 0, with q as the LCP holds it (shifted by M gap_old: an opening row's unknown is the
-  // total gap).
-  const Eigen::VectorXd x = ctx.k.solve(Eigen::VectorXd(sys.c.transpose() * r));
-  const Eigen::VectorXd mtr = sys.n.transpose() * r - sys.phi.transpose() * x;
-  const Eigen::VectorXd sizes = SparseMatrix(sys.n.cwiseAbs().transpose()) * r +
-                                SparseMatrix(sys.phi.cwiseAbs().transpose()) * x.cwiseAbs();
-  Eigen::VectorXd q = lcp.q;
-  if (lcp.gap_old.size() == q.size() && lcp.gap_old.cwiseAbs().maxCoeff() > 0.0)
-    q -= sys.n * lcp.gap_old - sys.c * ctx.k.solve(Eigen::VectorXd(sys.phi * lcp.gap_old));
-  const double m_max = sys.n.diagonal().cwiseAbs().maxCoeff();  // M_ii <= N_ii
-  if (!certifies_infeasibility(q, r, mtr, sizes, m_max))
+  // The certificate on the non-associated LCP itself.
+  const std::optional<double> fraction = certified_step_fraction(ctx, sys, lcp, r);
+  if (!fraction)
     return bound;
   bound.ray = r;
-  bound.proven_fraction =
-      lcp.load_part.size() == q.size() ? certified_from(q, lcp.load_part, r) : 1.0;
+  bound.proven_fraction = *fraction;
   return bound;
 }
 

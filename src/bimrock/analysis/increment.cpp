@@ -6,14 +6,19 @@
 #include <optional>
 
 #include <bimrock/analysis/associated_bound.hpp>
+#include <bimrock/analysis/step_certificate.hpp>
 #include <bimrock/assembly/yield_modes.hpp>  // kOpeningMode
 
 namespace bimrock {
 namespace {
 
 /// Plastic displacements of a load-controlled step more than this many times its elastic ones
-/// are a mechanism resolved only by round-off (see round_off_mechanism()).
+/// may be a mechanism resolved only by round-off (see flow_ratio()).
 constexpr double kMechanismRatio = 1e6;
+
+/// A mode of the LCP matrix whose stiffness, relative to the elastic one, is within this factor
+/// of the accuracy of K's solves is taken for a mechanism (solve/solve_accuracy.hpp).
+constexpr double kResolvableStiffness = 1e3;
 
 // The elastic predictor: the increment if nothing yielded (eq. 24 with lambda = 0).
 Eigen::VectorXd elastic_increment(const StageContext& ctx, double step) {
@@ -166,16 +171,17 @@ struct IterateCheck {
 // A mechanism that round-off turned into a very soft mode: with stiff (penalty) interfaces K^-1
 // is accurate only to ~ penalty x machine precision, so the exact null direction of M (e.g. all
 // blocks flowing plastically together) appears as a tiny positive eigenvalue and the multipliers
-// blow up instead of a certificate being found. Plastic displacements that dwarf the elastic
-// ones of the same step are that mechanism.
-bool round_off_mechanism(const StageContext& ctx, const AnalysisState& s,
-                         const Eigen::VectorXd& plastic_du, double step) {
+// blow up instead of a certificate being found. The step's plastic displacements over its
+// elastic ones measure how soft the mode is (0 under displacement control, where the step
+// prescribes the motion).
+double flow_ratio(const StageContext& ctx, const AnalysisState& s,
+                  const Eigen::VectorXd& plastic_du, double step) {
   if (ctx.controlled())
-    return false;
+    return 0.0;
   // A step of no load (strength reduction) is measured against the displacements so far.
   const double elastic = std::abs(step) * ctx.x_ref.cwiseAbs().maxCoeff();
   const double scale = elastic > 0.0 ? elastic : s.u.cwiseAbs().maxCoeff();
-  return scale > 0.0 && plastic_du.cwiseAbs().maxCoeff() > kMechanismRatio * scale;
+  return scale > 0.0 ? plastic_du.cwiseAbs().maxCoeff() / scale : 0.0;
 }
 
 // Adds a solve's work to the trial's; whether it ran on the reduced tangent.
@@ -357,10 +363,27 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
     const Eigen::VectorXd plastic_du = sys.size() > 0
                                            ? ctx.k.solve(Eigen::VectorXd(sys.phi * lambda))
                                            : Eigen::VectorXd::Zero(ctx.model.n_dofs());
-    if (round_off_mechanism(ctx, s, plastic_du, step)) {
-      const double top = lambda.cwiseAbs().maxCoeff();
-      t.du = plastic_du / top;
-      return collapse(sys, lambda.cwiseAbs() / top, ctx, std::move(t));
+    if (const double ratio = flow_ratio(ctx, s, plastic_du, step); ratio > kMechanismRatio) {
+      // A mechanism where the flow certifies the LCP, or where the mode is too soft for K's
+      // accuracy to tell from one: with penalty interfaces K's solves are accurate to 1e-8,
+      // and modes 1e7 - 4e8 times softer than the elastic response are round-off's. Without
+      // them (1e-16) a structure near its limit load can be as soft and still carry the step
+      // (blocks on a short interface, restrained only by its springs, flow 1e6 - 2e7 times
+      // their elastic motion): such a step is checked like any other.
+      const Eigen::VectorXd r = lambda.cwiseMax(0.0);
+      if (r.maxCoeff() > 0.0) {
+        if (const std::optional<double> fraction =
+                certified_step_fraction(ctx, sys, lcp, r / r.maxCoeff())) {
+          t.du = plastic_du / r.maxCoeff();
+          t.proven_fraction = *fraction;
+          return collapse(sys, r / r.maxCoeff(), ctx, std::move(t));
+        }
+      }
+      if (ratio * solver.k_accuracy() * kResolvableStiffness > 1.0) {
+        const double top = lambda.cwiseAbs().maxCoeff();
+        t.du = plastic_du / top;
+        return collapse(sys, lambda.cwiseAbs() / top, ctx, std::move(t));
+      }
     }
     const double dfactor =
         ctx.controlled() ? (step - ctx.control.dot(plastic_du)) / ctx.control_rate : step;

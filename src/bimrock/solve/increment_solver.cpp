@@ -8,6 +8,7 @@
 #include <bimrock/assembly/yield_modes.hpp>  // kOpeningMode
 #include <bimrock/solve/fischer_burmeister_newton.hpp>
 #include <bimrock/solve/least_norm_pivoting.hpp>
+#include <bimrock/solve/solve_accuracy.hpp>
 #include <bimrock/solve/symmetric_splitting.hpp>
 #include <bimrock/solve/unsymmetric_tangent.hpp>
 #include <bimrock/solve/working_set_lcp.hpp>
@@ -271,6 +272,8 @@ bool decided(const LcpResult& r) {
 IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
                                  const SparseMatrix& k_lower, const SolverTuning& tuning)
     : tuning_(tuning),
+      k_(k.solver()),
+      k_lower_(k_lower),
       zones_(model, k, k_lower, tuning.zones),
       active_set_(ActiveSetOptions{.max_iterations = tuning.active_set_iterations,
                                    .interrupt_after = tuning.interrupt_after}),
@@ -285,6 +288,12 @@ IncrementSolver::IncrementSolver(const Model& model, StiffnessFactor& k,
       root_only_(BranchAndBoundOptions{.max_nodes = 1,
                                        .max_root_work = 30.0 * BranchAndBoundOptions{}.max_work,
                                        .max_size = kRootOnlyRows}) {}
+
+double IncrementSolver::k_accuracy() const {
+  if (!k_accuracy_)
+    k_accuracy_ = solve_accuracy(k_, k_lower_);
+  return *k_accuracy_;
+}
 
 IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrupt* interrupt,
                                          bool stop_unsolved, Thoroughness thoroughness,

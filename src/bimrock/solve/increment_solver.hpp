@@ -163,6 +163,8 @@ class IncrementSolver {
 
   [[nodiscard]] const SolverTuning& tuning() const { return tuning_; }
   [[nodiscard]] ZoneStatistics zone_statistics() const { return zones_.statistics(); }
+  /// The relative accuracy of the solves with K (solve_accuracy.hpp), measured once.
+  [[nodiscard]] double k_accuracy() const;
 
  private:
   /// A non-associated LCP with exactly opposite flows that no route before branch and bound has
@@ -178,6 +180,9 @@ class IncrementSolver {
                                                         IncrementSolution& out);
 
   SolverTuning tuning_;
+  const SpdSolver& k_;
+  const SparseMatrix& k_lower_;
+  mutable std::optional<double> k_accuracy_;
   StiffnessZones zones_;
   ActiveSetLcp active_set_;
   ActiveSetLcp proposal_check_;  // tries the active sets the splitting proposes
