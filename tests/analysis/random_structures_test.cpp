@@ -1,16 +1,20 @@
 // Random small blocky structures with random joint strength (friction 15-60 deg, dilation from
 // 0 to the friction, cohesion zero or up to 20 kPa, no tension): gravity, then a lateral load
-// that may or may not exceed their strength. Every analysis must end carried or with a proven
-// collapse, never stopped. The state of every carried increment is checked against two laws
-// independent of how its LCP was solved: the global balance of forces (the support reactions,
-// integrated from the support springs' stresses, balance the applied loads) and every yield
-// function at or below zero. Each outcome is checked against a second method, the rigid-block
-// limit analysis of support/rigid_block_limit.hpp (a linear program): with associated flow the
+// that may or may not exceed their strength. Two families: columns of rectangular blocks, and
+// walls cut into irregular blocks by inclined joints (T-junctions among them), which may not
+// even carry their weight. Every analysis must end carried or with a proven collapse, never
+// stopped. The state of every carried increment is checked against two laws independent of how
+// its LCP was solved: the global balance of forces (the support reactions, integrated from the
+// support springs' stresses, balance the applied loads) and every yield function at or below
+// zero. Each outcome is checked against a second method, the rigid-block limit analysis of
+// support/rigid_block_limit.hpp (a linear program, stage by stage): with associated flow the
 // collapse load is its limit load, and with any other flow rule no load above it is carried
 // (the static theorem).
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -20,6 +24,7 @@
 
 #include "support/cases.hpp"
 #include "support/degrees.hpp"
+#include "support/irregular_blocks.hpp"
 #include "support/rigid_block_limit.hpp"
 #include "support/support_reaction.hpp"
 
@@ -34,15 +39,9 @@ struct RandomCase {
   std::string description;
 };
 
-// One or two columns of 1-3 rectangular blocks on a fixed base (its springs of the same joint
-// material), loaded by gravity (2 increments), then a horizontal force at the top block's top
-// corner of 0.1-1.2 times the total weight (8 increments).
-RandomCase random_case(std::mt19937& rng) {
+// The joint material of a random case, and its description.
+JointMaterial random_joint(std::mt19937& rng, std::string& description) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  RandomCase r;
-  CaseSpec& c = r.spec;
-  c.file = "random";
-  c.block_materials = {testing::rock(20e9, 0.25, kUnitWeight)};
   JointMaterial joint = testing::springs("joint", 1e10, 4e9);
   JointStrength s;
   const double phi = 15.0 + 45.0 * u(rng);
@@ -52,12 +51,49 @@ RandomCase random_case(std::mt19937& rng) {
   s.dilation = std::tan(psi * kDeg);
   s.cohesion = Softening::constant(cohesion);
   joint.strength = s;
+  description = "phi " + std::to_string(phi) + ", psi " + std::to_string(psi) + ", c " +
+                std::to_string(cohesion);
+  return joint;
+}
+
+// The blocks on a fixed base from 0 to `width` (its springs of the joint material), loaded by
+// gravity (2 increments), then by a horizontal force `push` times the total weight at `at`
+// (8 increments).
+RandomCase loaded_case(const JointMaterial& joint, const std::string& joint_description,
+                       const std::vector<Polygon>& blocks, double width, const Vec2& at,
+                       double push) {
+  RandomCase r;
+  CaseSpec& c = r.spec;
+  c.file = "random";
+  c.block_materials = {testing::rock(20e9, 0.25, kUnitWeight)};
   c.joint_materials = {joint};
   c.default_joint = "joint";
+  c.blocks = testing::blocks_of(blocks);
+  double weight = 0.0;
+  for (const Polygon& b : blocks)
+    weight += kUnitWeight * signed_area(b);
+  SupportSpec base = testing::fixed({0, 0}, {width, 0});
+  base.joint_material = "joint";
+  c.supports.push_back(base);
+  StageSpec gravity{"gravity", {}, 2, std::nullopt, {0, "gravity"}};
+  gravity.loads.gravity = Vec2(0, -1);
+  StageSpec lateral{"push", {}, 8, std::nullopt, {0, "push"}};
+  lateral.loads.points.push_back({at, Vec2(push * weight, 0.0), {0, "P"}});
+  c.stages = {gravity, lateral};
+  r.description = std::to_string(blocks.size()) + " blocks, " + joint_description +
+                  ", force/weight " + std::to_string(push);
+  return r;
+}
+
+// One or two columns of 1-3 rectangular blocks, pushed at the top block's top corner with
+// 0.1-1.2 times their weight.
+RandomCase random_columns(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::string described;
+  const JointMaterial joint = random_joint(rng, described);
   std::vector<Polygon> blocks;
   const int columns = u(rng) < 0.5 ? 1 : 2;
   double x = 0.0;
-  double weight = 0.0;
   Vec2 top_corner = Vec2::Zero();
   for (int col = 0; col < columns; ++col) {
     const double width = 0.5 + u(rng);
@@ -66,27 +102,29 @@ RandomCase random_case(std::mt19937& rng) {
     for (int row = 0; row < rows; ++row) {
       const double height = 0.3 + 0.9 * u(rng);
       blocks.push_back(Polygon{{{x, y}, {x + width, y}, {x + width, y + height}, {x, y + height}}});
-      weight += kUnitWeight * width * height;
       y += height;
     }
     if (col == 0)
       top_corner = Vec2(x, y);
     x += width;
   }
-  c.blocks = testing::blocks_of(blocks);
-  SupportSpec base = testing::fixed({0, 0}, {x, 0});
-  base.joint_material = "joint";
-  c.supports.push_back(base);
-  StageSpec gravity{"gravity", {}, 2, std::nullopt, {0, "gravity"}};
-  gravity.loads.gravity = Vec2(0, -1);
-  StageSpec push{"push", {}, 8, std::nullopt, {0, "push"}};
-  const double force = (0.1 + 1.1 * u(rng)) * weight;
-  push.loads.points.push_back({top_corner + Vec2(1e-3, -1e-3), Vec2(force, 0.0), {0, "P"}});
-  c.stages = {gravity, push};
-  r.description = std::to_string(blocks.size()) + " blocks, phi " + std::to_string(phi) + ", psi " +
-                  std::to_string(psi) + ", c " + std::to_string(cohesion) + ", force/weight " +
-                  std::to_string(force / weight);
-  return r;
+  const double push = 0.1 + 1.1 * u(rng);
+  return loaded_case(joint, described, blocks, x, top_corner + Vec2(1e-3, -1e-3), push);
+}
+
+// A wall of 1-2 m by 0.8-2 m cut into irregular blocks by 2-5 joints, pushed near its top left
+// corner with 0.05-0.6 times its weight.
+RandomCase random_wall(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::string described;
+  const JointMaterial joint = random_joint(rng, described);
+  const double width = 1.0 + u(rng);
+  const double height = 0.8 + 1.2 * u(rng);
+  const int cuts = 2 + static_cast<int>(4.0 * u(rng));
+  const auto seed = static_cast<unsigned>(1000.0 * u(rng));
+  const double push = 0.05 + 0.55 * u(rng);
+  return loaded_case(joint, described, testing::irregular_blocks(width, height, cuts, seed), width,
+                     Vec2(1e-3, height - 1e-3), push);
 }
 
 // The loads applied at the end of `stage` with its factor: the earlier stages whole.
@@ -110,36 +148,62 @@ CaseSpec with_associated_flow(CaseSpec c) {
   return c;
 }
 
-// The push's factors that the structures' rigid-block limit analysis (`limit`) allows: by the
-// static theorem no flow rule carries more, and associated flow collapses there.
-void expect_within_limit_analysis(const PlasticResult& r, double limit, bool associated,
+// The rigid-block limit factors of the two stages: of the weight, and of the push on the whole
+// weight (zero where the weight is not carried).
+struct Limits {
+  double gravity = 0.0;
+  double push = 0.0;
+};
+
+Limits limits_of(const Model& model) {
+  Limits l;
+  l.gravity = testing::rigid_block_limit_factor(model, Loads{}, model.stages[0].loads).value();
+  if (l.gravity >= 1.0)
+    l.push = testing::rigid_block_limit_factor(model, model.stages[0].loads, model.stages[1].loads)
+                 .value();
+  return l;
+}
+
+// What the limit analysis allows: by the static theorem no flow rule carries more than the limit
+// load of its stage, and associated flow collapses there, within the bracket tolerance.
+void expect_within_limit_analysis(const PlasticResult& r, const Limits& limit, bool associated,
                                   const std::string& what) {
-  constexpr double kTolerance = 1e-4;  // PlasticOptions::bracket_tolerance, relative
+  constexpr double kRoundOff = 1e-6;
+  constexpr double kBracket = 1e-4;  // PlasticOptions::bracket_tolerance, relative
   if (r.collapse) {
-    EXPECT_EQ(r.collapse->stage, 1) << what << ": gravity alone never fails a column on a base";
-    EXPECT_LE(r.collapse->carried, limit * (1.0 + 1e-6)) << what;
+    const Collapse& c = *r.collapse;
+    const double at = c.stage == 0 ? limit.gravity : limit.push;
+    if (c.stage == 1) {
+      EXPECT_GE(limit.gravity, 1.0 - kRoundOff) << what << ": carried more than its weight's limit";
+    }
+    EXPECT_LE(c.carried, at * (1.0 + kRoundOff)) << what << ": carried more than the limit load";
     if (associated) {
-      EXPECT_GE(r.collapse->failed, limit * (1.0 - 1e-6)) << what;
-      EXPECT_LE(r.collapse->failed - r.collapse->carried, kTolerance * r.collapse->failed) << what;
+      EXPECT_GE(c.failed, at * (1.0 - kRoundOff)) << what << ": failed below the limit load";
+      if (!c.unstable_at_first_load) {
+        EXPECT_LE(c.failed - c.carried, kBracket * c.failed) << what;
+      }
     }
   } else if (!r.stopped) {
-    EXPECT_LE(1.0, limit * (1.0 + 1e-6)) << what << ": carried more than the limit load";
-    if (associated) {
-      EXPECT_GE(limit, 1.0) << what;
-    }
+    EXPECT_GE(limit.gravity, 1.0 - kRoundOff) << what << ": carried more than its weight's limit";
+    EXPECT_GE(limit.push, 1.0 - kRoundOff) << what << ": carried more than the limit load";
   }
 }
 
-TEST(RandomStructures, EveryAnalysisCarriesOrProvesItsCollapseInBalance) {
-  std::mt19937 rng(2024);
+// Runs `trials` random cases of one family, each with its own flow rule and with associated
+// flow, and checks each as the file's header says; returns how many of them (with their own
+// flow rule) were carried and how many collapsed.
+std::pair<int, int> check_family(RandomCase (*random)(std::mt19937&), unsigned seed, int trials,
+                                 const std::string& family) {
+  std::mt19937 rng(seed);
   int collapsed = 0;
   int carried = 0;
-  for (int trial = 0; trial < 100; ++trial) {
-    const RandomCase rc = random_case(rng);
+  for (int trial = 0; trial < trials; ++trial) {
+    const RandomCase rc = random(rng);
     const Model model = build_model(rc.spec);
-    const std::optional<double> limit =
-        testing::rigid_block_limit_factor(model, model.stages[0].loads, model.stages[1].loads);
-    ASSERT_TRUE(limit.has_value()) << "trial " << trial << ": its weight alone is carried";
+    const Limits limit = limits_of(model);
+    const std::string what = family + " " + std::to_string(trial) + " (" + rc.description +
+                             "), limit analysis " + std::to_string(limit.gravity) + ", " +
+                             std::to_string(limit.push);
     YieldPointIndex index;
     const std::vector<YieldPoint> points = make_yield_points(model, &index);
     const YieldEvaluator yield(model, points);
@@ -157,26 +221,39 @@ TEST(RandomStructures, EveryAnalysisCarriesOrProvesItsCollapseInBalance) {
           yield.evaluate(state.points, state.u, f, &scale);
           worst_yield = std::max(worst_yield, f.f.maxCoeff() / std::max(scale, 1.0));
         });
-    EXPECT_FALSE(r.stopped.has_value())
-        << "trial " << trial << " (" << rc.description << "): " << r.stopped->reason;
-    EXPECT_LE(worst_balance, 1e-8) << "trial " << trial << " (" << rc.description << ")";
-    EXPECT_LE(worst_yield, 1e-8) << "trial " << trial << " (" << rc.description << ")";
+    EXPECT_FALSE(r.stopped.has_value()) << what << ": " << r.stopped->reason;
+    EXPECT_LE(worst_balance, 1e-8) << what;
+    // The analysis holds each yield function to 1e-9 of the larger stress of a state and of
+    // its elastic prediction, which near a collapse passes the state's own many times over.
+    EXPECT_LE(worst_yield, 1e-7) << what;
     if (r.collapse) {
       ++collapsed;
-      EXPECT_LT(r.collapse->carried, r.collapse->failed) << "trial " << trial;
+      EXPECT_LT(r.collapse->carried, r.collapse->failed) << what;
     } else if (!r.stopped) {
       ++carried;
     }
-    const std::string what = "trial " + std::to_string(trial) + " (" + rc.description +
-                             "), limit analysis " + std::to_string(*limit);
-    expect_within_limit_analysis(r, *limit, false, what);
+    expect_within_limit_analysis(r, limit, false, what);
     const PlasticResult a =
         run_plastic_analysis(build_model(with_associated_flow(rc.spec)), PlasticOptions{});
     EXPECT_FALSE(a.stopped.has_value()) << what << ", associated: " << a.stopped->reason;
-    expect_within_limit_analysis(a, *limit, true, what + ", associated");
+    expect_within_limit_analysis(a, limit, true, what + ", associated");
   }
-  std::printf("%d carried, %d collapsed\n", carried, collapsed);
+  std::printf("%s: %d carried, %d collapsed\n", family.c_str(), carried, collapsed);
+  return {carried, collapsed};
+}
+
+TEST(RandomStructures, EveryAnalysisOfColumnsEndsInBalanceWithinTheLimitAnalysis) {
+  const auto [carried, collapsed] = check_family(random_columns, 2024, 100, "columns");
   // The family holds both outcomes.
+  EXPECT_GT(collapsed, 10);
+  EXPECT_GT(carried, 10);
+}
+
+TEST(RandomStructures, EveryAnalysisOfJointedWallsEndsInBalanceWithinTheLimitAnalysis) {
+  // Some walls on cohesionless joints without dilation take 20 s each near their collapse (7-11
+  // blocks, the complete method's searches of 57-81 rows); these 40 take a fraction of a
+  // second. The reliability sweep (bench/random_sweep.py) measures the time such cases take.
+  const auto [carried, collapsed] = check_family(random_wall, 11, 40, "wall");
   EXPECT_GT(collapsed, 10);
   EXPECT_GT(carried, 10);
 }
