@@ -11,7 +11,6 @@
 // forces balance each block's loads as a rigid body. The largest factor of the live loads for
 // which one exists is the associated collapse load of the elastic-plastic block model
 // (docs/formulation.md), and by the static theorem no flow rule carries more.
-#include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -25,12 +24,11 @@ namespace bimrock::testing {
 
 /// The loads one block feels from `loads` as a rigid body: the force and its moment about the
 /// origin. Gravity and point loads only.
-inline void add_rigid_loads(const Model& model, const Loads& loads, double factor,
+inline void add_rigid_loads(const Model& model, const Loads& loads,
                             std::vector<Eigen::Vector3d>& per_block) {
   if (!loads.tractions.empty() || !loads.water.empty())
     throw std::invalid_argument("rigid_block_limit: gravity and point loads only");
-  const auto add = [&](int block, const Vec2& at, const Vec2& force) {
-    const Vec2 f = factor * force;
+  const auto add = [&](int block, const Vec2& at, const Vec2& f) {
     per_block[static_cast<std::size_t>(block)] +=
         Eigen::Vector3d(f.x(), f.y(), at.x() * f.y() - at.y() * f.x());
   };
@@ -52,8 +50,8 @@ inline std::optional<double> rigid_block_limit_factor(const Model& model, const 
   const int n_blocks = static_cast<int>(model.blocks.size());
   std::vector<Eigen::Vector3d> fixed(static_cast<std::size_t>(n_blocks), Eigen::Vector3d::Zero());
   std::vector<Eigen::Vector3d> scaled(static_cast<std::size_t>(n_blocks), Eigen::Vector3d::Zero());
-  add_rigid_loads(model, dead, 1.0, fixed);
-  add_rigid_loads(model, live, 1.0, scaled);
+  add_rigid_loads(model, dead, fixed);
+  add_rigid_loads(model, live, scaled);
 
   glp_prob* lp = glp_create_prob();
   glp_set_obj_dir(lp, GLP_MAX);
