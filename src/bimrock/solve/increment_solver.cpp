@@ -472,6 +472,17 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
     const LcpProblem dense = on_zone.dense();
     r = lemke_.solve(dense);
     out.pivots += r.steps;
+    if (!decided(r) && tuning_.active_set && !follows_associated_flow(local)) {
+      // The joints sticking: the openings alone, no slip, made exact by least-norm pivoting
+      // (which lets the slip rows that state violates join). From rest on cohesionless joints
+      // every point sits at its apex and the routes above fail on the degenerate LCP, where a
+      // structure that stands often does so without slipping.
+      const Eigen::VectorXd stick =
+          after_openings(on_zone, local, lcp.points, lcp.gap_old, active_set_);
+      if (std::optional<LcpResult> exact =
+              least_norm_pivoting(dense, stick, kLeastNormAccuracy, kLeastNormRounds, r.steps))
+        r = std::move(*exact);
+    }
     if (!decided(r) && tuning_.active_set && lcp.perturbed && has_opposite_flows(local)) {
       if (std::optional<LcpResult> near = from_perturbed(lcp, dense, out))
         r = std::move(*near);
