@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <bimrock/analysis/factor_of_safety.hpp>
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/plastic_analysis.hpp>
 #include <bimrock/assembly/yield_values.hpp>
@@ -256,6 +257,45 @@ TEST(RandomStructures, EveryAnalysisOfJointedWallsEndsInBalanceWithinTheLimitAna
   const auto [carried, collapsed] = check_family(random_wall, 11, 40, "wall");
   EXPECT_GT(collapsed, 10);
   EXPECT_GT(carried, 10);
+}
+
+TEST(RandomStructures, FactorsOfSafetyOfJointedWallsBracketTheLimitAnalysis) {
+  // The walls under their weight alone, and their factor of safety by strength reduction
+  // against the rigid-block one (bisection on the linear program): no flow rule carries
+  // strengths reduced beyond it, and associated flow fails there, within the tolerance.
+  std::mt19937 rng(14);
+  int below_one = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    RandomCase rc = random_wall(rng);
+    rc.spec.stages.resize(1);
+    const FactorOfSafetyOptions fos;
+    const double limit = testing::rigid_block_factor_of_safety(build_model(rc.spec), fos.largest);
+    below_one += limit < 1.0 ? 1 : 0;
+    for (const bool associated : {false, true}) {
+      const std::string what = "wall " + std::to_string(trial) + " (" + rc.description + ")" +
+                               (associated ? ", associated" : "") + ", limit analysis " +
+                               std::to_string(limit);
+      PlasticOptions options;
+      options.factor_of_safety = fos;
+      const PlasticResult r = run_plastic_analysis(
+          build_model(associated ? with_associated_flow(rc.spec) : rc.spec), options);
+      ASSERT_TRUE(r.factor_of_safety.has_value()) << what;
+      const FactorOfSafety& f = *r.factor_of_safety;
+      EXPECT_FALSE(f.undecided) << what;
+      EXPECT_LE(f.lower, limit * (1.0 + 1e-6)) << what << ": carried weaker strengths";
+      if (!associated)
+        continue;
+      if (f.collapse) {
+        EXPECT_GE(f.collapse->failed, limit * (1.0 - 1e-6)) << what;
+        EXPECT_LE(f.collapse->failed - f.lower, fos.tolerance * f.collapse->failed) << what;
+      } else {
+        EXPECT_GE(limit, fos.largest * (1.0 - 1e-6)) << what;
+      }
+    }
+  }
+  // The family holds walls that stand and walls that do not.
+  EXPECT_GT(below_one, 2);
+  EXPECT_LT(below_one, 18);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // Strength reduction (analysis/strength_reduction.hpp) against its definition worked by hand:
 // c / F, tan(phi) / F, sigma_t / F for joints (peak and residual), c / F and
-// phi' = atan(tan(phi) / F) for blocks, the dilation capped at the reduced friction angle, and
-// only the selected materials changed.
+// phi' = atan(tan(phi) / F) for blocks, the dilation capped at the reduced friction angle
+// (associated flow kept associated, whichever way F goes), and only the selected materials
+// changed.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -46,6 +47,21 @@ TEST(StrengthReduction, DividesEveryStrengthOfTheSelectedMaterials) {
   EXPECT_DOUBLE_EQ(b.cohesion, 0.5e6);
   EXPECT_NEAR(b.friction, std::sin(std::atan(std::tan(35.0 * kDeg) / 2.0)), 1e-15);
   EXPECT_DOUBLE_EQ(b.dilation, b.friction);  // psi = 20 deg is above phi' = 19.30 deg: capped
+}
+
+TEST(StrengthReduction, KeepsAssociatedFlowAssociatedAndOtherDilationsBelowTheFriction) {
+  const Model m = two_materials();
+  const Model associated = with_associated_flow(m);
+  for (const double factor : {0.5, 2.0}) {
+    // F < 1 raises the friction: associated flow follows it, a smaller dilation is kept.
+    const Model a = reduce_strength(associated, all_strengths(associated), factor);
+    EXPECT_DOUBLE_EQ(a.joint_materials[0].strength->dilation, std::tan(40.0 * kDeg) / factor);
+    EXPECT_NEAR(a.block_materials[0].strength->dilation,
+                std::sin(std::atan(std::tan(35.0 * kDeg) / factor)), 1e-15);
+  }
+  const Model raised = reduce_strength(m, all_strengths(m), 0.5);
+  EXPECT_DOUBLE_EQ(raised.joint_materials[0].strength->dilation, std::tan(30.0 * kDeg));
+  EXPECT_DOUBLE_EQ(raised.block_materials[0].strength->dilation, std::sin(20.0 * kDeg));
 }
 
 TEST(StrengthReduction, LeavesTheOthersAndTheStiffnessAlone) {

@@ -44,9 +44,10 @@ inline void add_rigid_loads(const Model& model, const Loads& loads,
 }
 
 /// The largest factor of `live` that rigid blocks carry together with `dead`: infinity where
-/// the program is unbounded, none where not even `dead` alone is carried.
+/// the program is unbounded, none where not even `dead` alone is carried. `reduction` divides
+/// every joint's strength (tan(phi), c and sigma_t), as strength reduction does.
 inline std::optional<double> rigid_block_limit_factor(const Model& model, const Loads& dead,
-                                                      const Loads& live) {
+                                                      const Loads& live, double reduction = 1.0) {
   const int n_blocks = static_cast<int>(model.blocks.size());
   std::vector<Eigen::Vector3d> fixed(static_cast<std::size_t>(n_blocks), Eigen::Vector3d::Zero());
   std::vector<Eigen::Vector3d> scaled(static_cast<std::size_t>(n_blocks), Eigen::Vector3d::Zero());
@@ -94,9 +95,9 @@ inline std::optional<double> rigid_block_limit_factor(const Model& model, const 
     const JointMaterial& m = model.joint_materials[static_cast<std::size_t>(f.joint_material)];
     if (!m.strength)
       throw std::invalid_argument("rigid_block_limit: every joint material needs a strength");
-    const double tan_phi = m.strength->friction.peak;
-    const double c = m.strength->cohesion.peak;
-    const double sigma_t = m.strength->tensile.peak;
+    const double tan_phi = m.strength->friction.peak / reduction;
+    const double c = m.strength->cohesion.peak / reduction;
+    const double sigma_t = m.strength->tensile.peak / reduction;
     const double w = 0.5 * f.segment.length() * model.settings.thickness;
     const Vec2 s(-f.normal.y(), f.normal.x());
     for (const Vec2& at : {f.segment.a, f.segment.b}) {
@@ -137,6 +138,26 @@ inline std::optional<double> rigid_block_limit_factor(const Model& model, const 
     factor = std::numeric_limits<double>::infinity();
   glp_delete_prob(lp);
   return factor;
+}
+
+/// The factor of safety of rigid blocks under the loads of the model's first stage: the largest
+/// divisor of the joints' strengths with which they are carried, to a relative 1e-9, or
+/// `largest` where that is carried.
+inline double rigid_block_factor_of_safety(const Model& model, double largest) {
+  const auto carried = [&](double reduction) {
+    const std::optional<double> f =
+        rigid_block_limit_factor(model, Loads{}, model.stages[0].loads, reduction);
+    return f && *f >= 1.0;
+  };
+  if (carried(largest))
+    return largest;
+  double lower = 0.0;  // strengths without bound carry anything a support can
+  double upper = largest;
+  while (upper - lower > 1e-9 * upper) {
+    const double mid = 0.5 * (lower + upper);
+    (carried(mid) ? lower : upper) = mid;
+  }
+  return 0.5 * (lower + upper);
 }
 
 }  // namespace bimrock::testing

@@ -38,18 +38,21 @@ Model reduce_strength(const Model& model, const StrengthSelection& selection, do
     std::optional<JointStrength>& s = reduced.joint_materials[m].strength;
     if (!s || m >= selection.joint_materials.size() || !selection.joint_materials[m])
       continue;
+    const bool associated =
+        s->dilation == s->friction.peak && s->friction.peak == s->friction.residual;
     s->cohesion = divided(s->cohesion, factor);
     s->friction = divided(s->friction, factor);
     s->tensile = divided(s->tensile, factor);
-    s->dilation = std::min(s->dilation, s->friction.peak);
+    s->dilation = associated ? s->friction.peak : std::min(s->dilation, s->friction.peak);
   }
   for (std::size_t m = 0; m < reduced.block_materials.size(); ++m) {
     std::optional<BlockStrength>& s = reduced.block_materials[m].strength;
     if (!s || m >= selection.block_materials.size() || !selection.block_materials[m])
       continue;
+    const bool associated = s->dilation == s->friction;
     s->cohesion /= factor;
     s->friction = reduced_sine(s->friction, factor);
-    s->dilation = std::min(s->dilation, s->friction);
+    s->dilation = associated ? s->friction : std::min(s->dilation, s->friction);
   }
   return reduced;
 }

@@ -20,7 +20,9 @@ StrengthSelection all_strengths(const Model& model);
 /// The model with the strengths of the selected materials divided by `factor` (> 0): cohesion
 /// and tensile strength by F, tan(phi) by F (block materials: phi' = atan(tan(phi) / F)), peak
 /// and residual values alike. The dilation is kept unless it would exceed the reduced friction
-/// angle, where it becomes that angle (a flow rule never more dilatant than associated flow).
+/// angle, where it becomes that angle (a flow rule never more dilatant than associated flow);
+/// associated flow stays associated, its dilation following the friction (raised too where
+/// F < 1).
 Model reduce_strength(const Model& model, const StrengthSelection& selection, double factor);
 
 /// The model with associated flow: each dilation angle (of joints and blocks) set to its
