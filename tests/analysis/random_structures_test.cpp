@@ -21,6 +21,7 @@
 #include <bimrock/analysis/factor_of_safety.hpp>
 #include <bimrock/analysis/field_results.hpp>
 #include <bimrock/analysis/plastic_analysis.hpp>
+#include <bimrock/analysis/strength_reduction.hpp>
 #include <bimrock/assembly/yield_values.hpp>
 
 #include "support/cases.hpp"
@@ -142,13 +143,6 @@ Vec2 applied_force(const CaseSpec& c, const Model& model, int stage, double fact
   return total;
 }
 
-// The same case with each dilation equal to its friction.
-CaseSpec with_associated_flow(CaseSpec c) {
-  for (JointMaterial& m : c.joint_materials)
-    m.strength->dilation = m.strength->friction.peak;
-  return c;
-}
-
 // The rigid-block limit factors of the two stages: of the weight, and of the push on the whole
 // weight (zero where the weight is not carried).
 struct Limits {
@@ -235,7 +229,7 @@ std::pair<int, int> check_family(RandomCase (*random)(std::mt19937&), unsigned s
     }
     expect_within_limit_analysis(r, limit, false, what);
     const PlasticResult a =
-        run_plastic_analysis(build_model(with_associated_flow(rc.spec)), PlasticOptions{});
+        run_plastic_analysis(with_associated_flow(build_model(rc.spec)), PlasticOptions{});
     EXPECT_FALSE(a.stopped.has_value()) << what << ", associated: " << a.stopped->reason;
     expect_within_limit_analysis(a, limit, true, what + ", associated");
   }
@@ -278,7 +272,7 @@ TEST(RandomStructures, FactorsOfSafetyOfJointedWallsBracketTheLimitAnalysis) {
       PlasticOptions options;
       options.factor_of_safety = fos;
       const PlasticResult r = run_plastic_analysis(
-          build_model(associated ? with_associated_flow(rc.spec) : rc.spec), options);
+          associated ? with_associated_flow(build_model(rc.spec)) : build_model(rc.spec), options);
       ASSERT_TRUE(r.factor_of_safety.has_value()) << what;
       const FactorOfSafety& f = *r.factor_of_safety;
       EXPECT_FALSE(f.undecided) << what;

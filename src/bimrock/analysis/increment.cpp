@@ -371,12 +371,12 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       // (blocks on a short interface, restrained only by its springs, flow 1e6 - 2e7 times
       // their elastic motion): such a step is checked like any other.
       const Eigen::VectorXd r = lambda.cwiseMax(0.0);
-      if (r.maxCoeff() > 0.0) {
+      if (const double top = r.maxCoeff(); top > 0.0) {
         if (const std::optional<double> fraction =
-                certified_step_fraction(ctx, sys, lcp, r / r.maxCoeff())) {
-          t.du = plastic_du / r.maxCoeff();
+                certified_step_fraction(ctx, sys, lcp, r / top)) {
+          t.du = plastic_du / top;
           t.proven_fraction = *fraction;
-          return collapse(sys, r / r.maxCoeff(), ctx, std::move(t));
+          return collapse(sys, r / top, ctx, std::move(t));
         }
       }
       if (ratio * solver.k_accuracy() * kResolvableStiffness > 1.0) {
