@@ -167,8 +167,11 @@ TEST(LoadStepping, CutsLeftUndecidedLookForAProofUpToTheStagesEnd) {
   EXPECT_LE(out.carried, kCollapse);
   EXPECT_GT(out.carried, 0.999 * kCollapse);  // the cuts' budget spent carrying towards F
   EXPECT_NEAR(out.failed, kProvenAbove, 1e-12);
-  EXPECT_EQ(s.asked.back(), Thoroughness::proof);  // the trial to the stage's end
-  EXPECT_NEAR(s.tried.back(), 1.0 - out.carried, 1e-15);
+  // The first trial for a proof goes to the stage's end.
+  const auto first_proof = std::find(s.asked.begin(), s.asked.end(), Thoroughness::proof);
+  ASSERT_NE(first_proof, s.asked.end());
+  EXPECT_NEAR(s.tried[static_cast<std::size_t>(first_proof - s.asked.begin())], 1.0 - out.carried,
+              1e-15);
 
   // Without the stage's end, the same cuts stop undecided.
   Structure alone{.answer = answer};
@@ -193,9 +196,38 @@ TEST(LoadStepping, WhereTheTrialToTheStagesEndIsUndecidedShorterOnesLookForThePr
   ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
   EXPECT_TRUE(out.undecided_inside);
   EXPECT_NEAR(out.failed, kProvenAbove, 1e-12);
-  ASSERT_GE(s.tried.size(), 2u);
-  EXPECT_NEAR(s.tried.back(), (1.0 - out.carried) / 2.0, 1e-15);  // the second trial for it
+  // The trials for a proof: to the stage's end, half as far (which proves it), and a quarter
+  // (which does not: the search ends).
+  std::vector<double> proofs;
+  for (std::size_t k = 0; k < s.tried.size(); ++k)
+    if (s.asked[k] == Thoroughness::proof)
+      proofs.push_back(s.tried[k]);
+  ASSERT_EQ(proofs.size(), 3u);
+  EXPECT_NEAR(proofs[1], (1.0 - out.carried) / 2.0, 1e-15);
+  EXPECT_NEAR(proofs[2], (1.0 - out.carried) / 4.0, 1e-15);
+}
+
+TEST(LoadStepping, AfterAProofShorterTrialsLookForANearerOne) {
+  // As above, but a certificate proves a step to fail only from 90% of it on, or from U where
+  // that is further down: the trial to the stage's end proves failure from 0.96 only, and the
+  // one half as far from U.
+  constexpr double kProvenAbove = 0.8;
+  Structure s{.answer = [](double from, double step) {
+    const double reach = from + step;
+    if (reach <= kCollapse)
+      return carried_to(reach);
+    if (reach <= kProvenAbove)
+      return failed();
+    return collapsed(std::max((kProvenAbove - from) / step, 0.9));
+  }};
+  s.factor = 0.5;
+  const SteppedIncrement out = s.step(0.25, {.stage_end = 1.0});
+  ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
+  EXPECT_TRUE(out.undecided_inside);
+  EXPECT_LE(out.carried, kCollapse);
+  EXPECT_NEAR(out.failed, kProvenAbove, 1e-12);
   EXPECT_EQ(s.asked.back(), Thoroughness::proof);
+  EXPECT_NEAR(s.tried.back(), (1.0 - out.carried) / 4.0, 1e-15);  // it fails: the search ends
 }
 
 TEST(LoadStepping, ANumericalFailureIsCutAndTheRestCarriedNotTakenForACollapse) {

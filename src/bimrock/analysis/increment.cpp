@@ -288,6 +288,18 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       // join a next round (as they would in an analysis with associated flow).
       std::vector<int> associated_outside;
       YieldValues associated_f;
+      // The points outside the round's LCP (lcp_points, ascending) that a flow with
+      // displacements `flow_du` violates (they keep their plastic state: only their
+      // displacements change).
+      const auto violated_outside = [&](const Eigen::VectorXd& flow_du, YieldValues& f) {
+        AnalysisState at = s;
+        at.u += step * ctx.x_ref + flow_du;
+        std::vector<int> outside;
+        for (int point : check_all_yield_functions(ctx, at, tol, f))
+          if (!std::binary_search(lcp_points.begin(), lcp_points.end(), point))
+            outside.push_back(point);
+        return outside;
+      };
       const auto associated_collapse = [&]() -> std::optional<Trial> {
         if (!non_associated || associated_tried)
           return std::nullopt;
@@ -299,14 +311,8 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
         clock.lap("increments: LCP", "increments: K^-1 Phi columns",
                   bound.associated.columns_seconds);
         if (!bound.proven()) {
-          if (for_proof && bound.flow_du.size() > 0) {
-            // The points outside keep their plastic state: only their displacements change.
-            AnalysisState at = s;
-            at.u += step * ctx.x_ref + bound.flow_du;
-            for (int point : check_all_yield_functions(ctx, at, tol, associated_f))
-              if (!std::binary_search(in_lcp.begin(), in_lcp.end(), point))
-                associated_outside.push_back(point);
-          }
+          if (for_proof && bound.flow_du.size() > 0)
+            associated_outside = violated_outside(bound.flow_du, associated_f);
           return std::nullopt;
         }
         // The mechanism's displacements with the joints' own flow, K^-1 Phi r: with dilation
@@ -350,10 +356,24 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
       if (solution.outcome == Outcome::undecided) {
         if (std::optional<Trial> proven = associated_collapse())
           return std::move(*proven);
-        if (associated_outside.empty())
-          return t;  // failed: the caller cuts the step
-        candidates.require(associated_outside, associated_f, solver);
-        continue;
+        if (!associated_outside.empty()) {
+          candidates.require(associated_outside, associated_f, solver);
+          continue;
+        }
+        // Associated flow: the round's LCP leaves the points outside it elastic, and past the
+        // limit load it can still have solutions, of flows so large that no pivoting method
+        // resolves them, which the points outside would have bounded (a mechanism held only by
+        // their springs). Those that the last iterate's flow violates join a next round. (A
+        // non-associated LCP is left undecided for more reasons, and its next rounds cost more
+        // than they decide.)
+        if (!non_associated && solution.z.size() == sys.size() && solution.z.allFinite()) {
+          const Eigen::VectorXd flow_du =
+              ctx.k.solve(Eigen::VectorXd(sys.phi * (solution.z - lcp.gap_old)));
+          YieldValues f;
+          if (candidates.require(violated_outside(flow_du, f), f, solver) > 0)
+            continue;
+        }
+        return t;  // failed: the caller cuts the step
       }
       z = solution.z;
     }

@@ -23,7 +23,7 @@ constexpr double kGrowth = 2.0;
 /// Trials of one increment, carried or not, at most this many per bisection allowed.
 constexpr int kTrialsPerBisection = 4;
 /// Trials for a proof above the loads carried, where cutting ended without one: to the stage's
-/// end, then each half as far.
+/// end, then each half as far, at most this many.
 constexpr int kProofTrials = 4;
 
 }  // namespace
@@ -166,15 +166,20 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   // and the associated one, no increment may be solvable nor provably not): a proof may still
   // stand further up, where the load fails whatever the flow. The first trial goes to the
   // stage's end, each next one half as far: a shorter step's LCPs are smaller, and decided where
-  // a long one's are left undecided.
+  // a long one's are left undecided. After a proof the halving goes on while the trials prove,
+  // and the nearest proof bounds the collapse load.
   if (!proven && remaining > 0.0 && options.stage_end && *options.stage_end > out.carried) {
     double reach = *options.stage_end - out.carried;
     for (int k = 0; k < kProofTrials && reach > failing_step; ++k, reach /= 2.0) {
       const Trial far = try_step(reach, Thoroughness::proof);
       if (far.status == Trial::Status::collapse) {
-        proven = out.carried + reach * far.proven_fraction;
-        out.failure = far;
+        const double at = out.carried + reach * far.proven_fraction;
+        if (!proven || at < *proven) {
+          proven = at;
+          out.failure = far;
+        }
         out.undecided_inside = true;
+      } else if (proven) {
         break;
       }
     }
