@@ -251,11 +251,16 @@ TEST(RandomStructures, EveryAnalysisOfColumnsEndsInBalanceWithinTheLimitAnalysis
 
 TEST(RandomStructures, EveryAnalysisOfJointedWallsEndsInBalanceWithinTheLimitAnalysis) {
   // Some walls on cohesionless joints without dilation take 20 s each near their collapse (7-11
-  // blocks, the complete method's searches of 57-81 rows); these 40 take a fraction of a
-  // second. The reliability sweep (bench/random_sweep.py) measures the time such cases take.
-  const auto [carried, collapsed] = check_family(random_wall, 11, 40, "wall");
-  EXPECT_GT(collapsed, 10);
-  EXPECT_GT(carried, 10);
+  // blocks, the complete method's searches of 57-81 rows); these 80 take about two seconds.
+  // The reliability sweep (bench/random_sweep.py) measures the time such cases take. Among
+  // these, wall 33 of seed 23 (10 blocks, friction 33.1 deg, dilation 0) has the first
+  // increment of its weight solved only through the perturbed flows, where at one point both
+  // slips stand for the opening (IncrementSolver::from_perturbed).
+  for (const unsigned seed : {11U, 23U}) {
+    const auto [carried, collapsed] = check_family(random_wall, seed, 40, "wall");
+    EXPECT_GT(collapsed, 10) << "seed " << seed;
+    EXPECT_GT(carried, 10) << "seed " << seed;
+  }
 }
 
 TEST(RandomStructures, AssociatedFlowBracketsTheLimitOfAWallWhoseRoundsLeaveItsMechanismOut) {

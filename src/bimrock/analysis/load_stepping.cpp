@@ -166,8 +166,9 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
   // and the associated one, no increment may be solvable nor provably not): a proof may still
   // stand further up, where the load fails whatever the flow. The first trial goes to the
   // stage's end, each next one half as far: a shorter step's LCPs are smaller, and decided where
-  // a long one's are left undecided. After a proof the halving goes on while the trials prove,
-  // and the nearest proof bounds the collapse load.
+  // a long one's are left undecided. After a proof (its certificate may prove failure only near
+  // the trial's end) the halving goes on while the trials prove and end below the nearest proof,
+  // which bounds the collapse load.
   if (!proven && remaining > 0.0 && options.stage_end && *options.stage_end > out.carried) {
     double reach = *options.stage_end - out.carried;
     for (int k = 0; k < kProofTrials && reach > failing_step; ++k, reach /= 2.0) {
@@ -179,6 +180,8 @@ SteppedIncrement step_increment(double step, double factor, const TryStep& try_s
           out.failure = far;
         }
         out.undecided_inside = true;
+        if (out.carried + reach / 2.0 >= *proven)
+          break;  // the next trial would end past the proof
       } else if (proven) {
         break;
       }

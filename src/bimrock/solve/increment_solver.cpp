@@ -1,12 +1,15 @@
 #include <bimrock/solve/increment_solver.hpp>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include <bimrock/assembly/yield_modes.hpp>  // kOpeningMode
 #include <bimrock/solve/fischer_burmeister_newton.hpp>
+#include <bimrock/solve/lcp_polyhedron.hpp>
 #include <bimrock/solve/least_norm_pivoting.hpp>
 #include <bimrock/solve/solve_accuracy.hpp>
 #include <bimrock/solve/symmetric_splitting.hpp>
@@ -252,15 +255,51 @@ constexpr double kLeastNormAccuracy = 1e-9;
 /// friction phi, a small t is a dilation of about t tan(phi).)
 constexpr std::array<double, 5> kFlowPerturbations{1.0, 1e-1, 1e-2, 1e-3, 1e-4};
 
-/// Whether two rows of one yield point flow in exactly opposite directions (the slip rows of a
-/// joint point at dilation 0): their columns of M cancel.
-bool has_opposite_flows(const YieldSystem& rows) {
+/// The work of the linear program at an active set (IncrementSolver::from_perturbed), counted
+/// as n^2 per simplex pivot on n rows: that of a branch and bound search (BranchAndBoundOptions),
+/// ample for one feasible point of a few hundred rows, and soon given up on thousands.
+constexpr double kPatternWork = 1e9;
+
+/// The pairs of rows of one yield point that flow in exactly opposite directions (the slip rows
+/// of a joint point at dilation 0): their columns of M cancel.
+std::vector<std::pair<std::size_t, std::size_t>> opposite_flows(const YieldSystem& rows) {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (std::size_t i = 0; i + 1 < rows.rows.size(); ++i)
     for (std::size_t j = i + 1; j < rows.rows.size() && rows.rows[j].point == rows.rows[i].point;
          ++j)
       if ((rows.flow[i] + rows.flow[j]).squaredNorm() <= 1e-24 * rows.flow[i].squaredNorm())
-        return true;
-  return false;
+        pairs.emplace_back(i, j);
+  return pairs;
+}
+
+/// A solution `z` of the perturbed LCP read as one of the LCP itself: where both slips of a
+/// pair that flow in exactly opposite directions are active, their common part becomes the
+/// opening of the point. At a small perturbation t the two slips dilate by about t tan(phi)
+/// each, and a point that opens does so with both active at multipliers of order 1 / t, whose
+/// difference is the slip and whose sum times the dilation the opening: at t = 0 the same
+/// motion needs the opening row. None where no point has both slips of such a pair active.
+std::optional<Eigen::VectorXd> opposite_slips_as_opening(const YieldSystem& rows,
+                                                         const Eigen::VectorXd& z) {
+  Eigen::VectorXd out = z;
+  bool read = false;
+  for (const auto& [i, j] : opposite_flows(rows)) {
+    const auto a = static_cast<Eigen::Index>(i);
+    const auto b = static_cast<Eigen::Index>(j);
+    const double both = std::min(out(a), out(b));
+    if (!(both > 0.0))
+      continue;
+    for (std::size_t k = i; k < rows.rows.size() && rows.rows[k].point == rows.rows[i].point; ++k)
+      if (rows.rows[k].mode == kOpeningMode) {
+        const auto open = static_cast<Eigen::Index>(k);
+        out(open) = std::max(out(open), both);
+        out(a) -= both;
+        out(b) -= both;
+        read = true;
+      }
+  }
+  if (!read)
+    return std::nullopt;
+  return out;
 }
 
 bool decided(const LcpResult& r) {
@@ -483,7 +522,7 @@ IncrementSolution IncrementSolver::solve(const IncrementLcp& lcp, const Interrup
               least_norm_pivoting(dense, stick, kLeastNormAccuracy, kLeastNormRounds, r.steps))
         r = std::move(*exact);
     }
-    if (!decided(r) && tuning_.active_set && lcp.perturbed && has_opposite_flows(local)) {
+    if (!decided(r) && tuning_.active_set && lcp.perturbed && !opposite_flows(local).empty()) {
       if (std::optional<LcpResult> near = from_perturbed(lcp, dense, out))
         r = std::move(*near);
     }
@@ -539,6 +578,26 @@ std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp
     if (std::optional<LcpResult> exact = least_norm_pivoting(
             dense, solved.z, kLeastNormAccuracy, kLeastNormRounds, solved.active_set_iterations))
       return exact;
+    // The active set that solution suggests, its opposite slips read as openings: the LCP's
+    // solutions with it are the points z_A >= 0, M_AA z_A = -q_A, w_N >= 0 of one linear
+    // program (M_AA singular at a cohesionless apex, where least-norm pivoting can only give
+    // the least-norm one of them, with entries below zero).
+    const std::optional<Eigen::VectorXd> read = opposite_slips_as_opening(lcp.rows, solved.z);
+    if (!read)
+      continue;
+    std::vector<LcpPolyhedron::Fix> fix(static_cast<std::size_t>(dense.size()));
+    for (Eigen::Index i = 0; i < dense.size(); ++i)
+      fix[static_cast<std::size_t>(i)] =
+          (*read)(i) > 0.0 ? LcpPolyhedron::Fix::w : LcpPolyhedron::Fix::z;
+    const auto n = static_cast<double>(dense.size());
+    LcpPolyhedron polyhedron(dense);
+    const LcpPolyhedron::Vertex v =
+        polyhedron.vertex(fix, static_cast<long>(kPatternWork / (n * n)) + 1);
+    if (v.status == LcpPolyhedron::Status::feasible) {
+      if (std::optional<LcpResult> exact = least_norm_pivoting(
+              dense, v.z, kLeastNormAccuracy, kLeastNormRounds, solved.active_set_iterations))
+        return exact;
+    }
   }
   return std::nullopt;
 }

@@ -171,10 +171,11 @@ class IncrementSolver {
   /// solved: the LCPs of its rows perturbed by fractions from 1 (associated flow) down to 1e-4
   /// (IncrementLcp::perturbed), each solved quick by the routes before the pivoting methods from
   /// the last one's solution, and each solution made exact on this LCP (`dense`) by least-norm
-  /// pivoting. At dilation 0 the opposite slip columns of a joint point cancel: the block rule's
-  /// active sets there are singular, and branch and bound's tree outgrows its budget, where the
-  /// perturbed LCPs are solved as any other. Empty where none gives a solution; where associated
-  /// flow is not solved, the rest are not tried (past its limit load none is).
+  /// pivoting, or else its active set, opposite slips both active read as the point's opening,
+  /// solved as a linear program. At dilation 0 the opposite slip columns of a joint point cancel:
+  /// the block rule's active sets there are singular, and branch and bound's tree outgrows its
+  /// budget, where the perturbed LCPs are solved as any other. Empty where none gives a solution;
+  /// where associated flow is not solved, the rest are not tried (past its limit load none is).
   [[nodiscard]] std::optional<LcpResult> from_perturbed(const IncrementLcp& lcp,
                                                         const LcpProblem& dense,
                                                         IncrementSolution& out);
