@@ -257,7 +257,9 @@ constexpr std::array<double, 5> kFlowPerturbations{1.0, 1e-1, 1e-2, 1e-3, 1e-4};
 
 /// The work of the linear program at an active set (IncrementSolver::from_perturbed), counted
 /// as n^2 per simplex pivot on n rows: that of a branch and bound search (BranchAndBoundOptions),
-/// ample for one feasible point of a few hundred rows, and soon given up on thousands.
+/// and like it only on LCPs of at most its max_size rows. Measured on two random footings: on
+/// 260 - 560 rows, 66 programs took 0.75 s in all, and gave the solutions that cut one analysis
+/// from 70 s to 20 s; on 1 300 - 2 300 rows, 48 of 51 ran out of it, 0.3 - 0.5 s each.
 constexpr double kPatternWork = 1e9;
 
 /// The pairs of rows of one yield point that flow in exactly opposite directions (the slip rows
@@ -582,6 +584,8 @@ std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp
     // solutions with it are the points z_A >= 0, M_AA z_A = -q_A, w_N >= 0 of one linear
     // program (M_AA singular at a cohesionless apex, where least-norm pivoting can only give
     // the least-norm one of them, with entries below zero).
+    if (dense.size() > BranchAndBoundOptions{}.max_size)
+      continue;
     const std::optional<Eigen::VectorXd> read = opposite_slips_as_opening(lcp.rows, solved.z);
     if (!read)
       continue;
