@@ -146,19 +146,21 @@ TEST(LoadStepping, WhereOnlySmallStepsCarryThePartsGrowAndReachTheCollapse) {
   EXPECT_LE(s.tried.size(), 4u * 40u);
 }
 
+// Past F no step is solved, and none is proven to fail before it reaches U = kProvenAbove (as
+// between the limit loads of non-associated flow and of associated flow): a step beyond U is
+// proven to fail from U on, or from the fraction `least` of it where that is further up.
+constexpr double kProvenAbove = 0.8;
+Trial proven_above(double from, double step, double least = 0.0) {
+  const double reach = from + step;
+  if (reach <= kCollapse)
+    return carried_to(reach);
+  if (reach <= kProvenAbove)
+    return failed();
+  return collapsed(std::max((kProvenAbove - from) / step, least));
+}
+
 TEST(LoadStepping, CutsLeftUndecidedLookForAProofUpToTheStagesEnd) {
-  // Past F no step is solved, and none is proven to fail before it reaches U = 0.8 (as between
-  // the limit loads of non-associated flow and of associated flow): a step beyond U is proven
-  // to fail from U on.
-  constexpr double kProvenAbove = 0.8;
-  const auto answer = [](double from, double step) {
-    const double reach = from + step;
-    if (reach <= kCollapse)
-      return carried_to(reach);
-    if (reach <= kProvenAbove)
-      return failed();
-    return collapsed((kProvenAbove - from) / step);
-  };
+  const auto answer = [](double from, double step) { return proven_above(from, step); };
   Structure s{.answer = answer};
   s.factor = 0.5;
   const SteppedIncrement out = s.step(0.25, {.stage_end = 1.0});
@@ -182,14 +184,8 @@ TEST(LoadStepping, CutsLeftUndecidedLookForAProofUpToTheStagesEnd) {
 TEST(LoadStepping, WhereTheTrialToTheStagesEndIsUndecidedShorterOnesLookForTheProof) {
   // As above, but a trial past 0.95 is undecided too (its LCPs too large to decide): the trials
   // for a proof go half as far each, and the one that reaches 0.807 proves it from 0.8.
-  constexpr double kProvenAbove = 0.8;
   Structure s{.answer = [](double from, double step) {
-    const double reach = from + step;
-    if (reach <= kCollapse)
-      return carried_to(reach);
-    if (reach <= kProvenAbove || reach > 0.95)
-      return failed();
-    return collapsed((kProvenAbove - from) / step);
+    return from + step > 0.95 ? failed() : proven_above(from, step);
   }};
   s.factor = 0.5;
   const SteppedIncrement out = s.step(0.25, {.stage_end = 1.0});
@@ -211,15 +207,7 @@ TEST(LoadStepping, AfterAProofShorterTrialsLookForANearerOne) {
   // As above, but a certificate proves a step to fail only from 90% of it on, or from U where
   // that is further down: the trial to the stage's end proves failure from 0.96 only, and the
   // one half as far from U.
-  constexpr double kProvenAbove = 0.8;
-  Structure s{.answer = [](double from, double step) {
-    const double reach = from + step;
-    if (reach <= kCollapse)
-      return carried_to(reach);
-    if (reach <= kProvenAbove)
-      return failed();
-    return collapsed(std::max((kProvenAbove - from) / step, 0.9));
-  }};
+  Structure s{.answer = [](double from, double step) { return proven_above(from, step, 0.9); }};
   s.factor = 0.5;
   const SteppedIncrement out = s.step(0.25, {.stage_end = 1.0});
   ASSERT_EQ(out.outcome, SteppedIncrement::Outcome::collapse);
