@@ -580,12 +580,12 @@ std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp
     if (std::optional<LcpResult> exact = least_norm_pivoting(
             dense, solved.z, kLeastNormAccuracy, kLeastNormRounds, solved.active_set_iterations))
       return exact;
+    if (dense.size() > BranchAndBoundOptions{}.max_size)
+      continue;  // the linear program below would run out of its budget (kPatternWork)
     // The active set that solution suggests, its opposite slips read as openings: the LCP's
     // solutions with it are the points z_A >= 0, M_AA z_A = -q_A, w_N >= 0 of one linear
     // program (M_AA singular at a cohesionless apex, where least-norm pivoting can only give
     // the least-norm one of them, with entries below zero).
-    if (dense.size() > BranchAndBoundOptions{}.max_size)
-      continue;
     const std::optional<Eigen::VectorXd> read = opposite_slips_as_opening(lcp.rows, solved.z);
     if (!read)
       continue;
