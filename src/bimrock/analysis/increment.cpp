@@ -305,8 +305,7 @@ Trial solve_increment(const StageContext& ctx, const AnalysisState& s, double st
           return std::nullopt;
         associated_tried = true;
         const bool for_proof = thoroughness == Thoroughness::proof;
-        const std::vector<int> in_lcp = candidates.in_lcp(solver);  // ascending
-        AssociatedBound bound = associated_bound(ctx, s, in_lcp, sys, lcp, solver, for_proof);
+        AssociatedBound bound = associated_bound(ctx, s, lcp_points, sys, lcp, solver, for_proof);
         tally(bound.associated, t);
         clock.lap("increments: LCP", "increments: K^-1 Phi columns",
                   bound.associated.columns_seconds);

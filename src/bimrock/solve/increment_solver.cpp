@@ -279,12 +279,14 @@ std::vector<std::pair<std::size_t, std::size_t>> opposite_flows(const YieldSyste
 /// opening of the point. At a small perturbation t the two slips dilate by about t tan(phi)
 /// each, and a point that opens does so with both active at multipliers of order 1 / t, whose
 /// difference is the slip and whose sum times the dilation the opening: at t = 0 the same
-/// motion needs the opening row. None where no point has both slips of such a pair active.
-std::optional<Eigen::VectorXd> opposite_slips_as_opening(const YieldSystem& rows,
-                                                         const Eigen::VectorXd& z) {
+/// motion needs the opening row. `pairs`: opposite_flows(rows). None where no point has both
+/// slips of such a pair active.
+std::optional<Eigen::VectorXd> opposite_slips_as_opening(
+    const YieldSystem& rows, const std::vector<std::pair<std::size_t, std::size_t>>& pairs,
+    const Eigen::VectorXd& z) {
   Eigen::VectorXd out = z;
   bool read = false;
-  for (const auto& [i, j] : opposite_flows(rows)) {
+  for (const auto& [i, j] : pairs) {
     const auto a = static_cast<Eigen::Index>(i);
     const auto b = static_cast<Eigen::Index>(j);
     const double both = std::min(out(a), out(b));
@@ -562,6 +564,7 @@ std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp
                                                          IncrementSolution& out) {
   Eigen::VectorXd warm = lcp.warm;
   bool any_solved = false;
+  const std::vector<std::pair<std::size_t, std::size_t>> opposite = opposite_flows(lcp.rows);
   for (const double t : kFlowPerturbations) {
     const PerturbedRows rows = lcp.perturbed(t);
     const IncrementLcp near{rows.rows,   lcp.points,       lcp.q, lcp.load_part,    lcp.gap_old,
@@ -586,7 +589,8 @@ std::optional<LcpResult> IncrementSolver::from_perturbed(const IncrementLcp& lcp
     // solutions with it are the points z_A >= 0, M_AA z_A = -q_A, w_N >= 0 of one linear
     // program (M_AA singular at a cohesionless apex, where least-norm pivoting can only give
     // the least-norm one of them, with entries below zero).
-    const std::optional<Eigen::VectorXd> read = opposite_slips_as_opening(lcp.rows, solved.z);
+    const std::optional<Eigen::VectorXd> read =
+        opposite_slips_as_opening(lcp.rows, opposite, solved.z);
     if (!read)
       continue;
     std::vector<LcpPolyhedron::Fix> fix(static_cast<std::size_t>(dense.size()));
